@@ -1,0 +1,153 @@
+#ifndef fsgmpm_grid_background_grid_h
+#define fsgmpm_grid_background_grid_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * The simplex background grid of the MPM (triangles in 2D, tetrahedra in
+   * 3D) with the per-cell affine data that the explicit step needs.
+   *
+   * For linear simplices the shape function of local vertex k at a point x is
+   * its barycentric coordinate lambda_k(x) and its gradient is constant over
+   * the cell. We therefore precompute for every cell the exact inverse of the
+   * affine map (lambda_1..lambda_dim = A (x - x_0), lambda_0 = 1 - sum) and the
+   * dim+1 gradients once; point location and all particle-grid transfers then
+   * use only these arrays, never a mapping's Newton iteration. Negatively
+   * oriented cells (Gmsh tets) need no special care: A is the inverse of the
+   * cell's edge matrix whatever the sign of its determinant.
+   *
+   * Nodes are the degrees of freedom of a scalar FE_SimplexP<dim>(1) on the
+   * triangulation, so nodal vectors can be written by DataOut directly.
+   */
+  template <int dim>
+  class BackgroundGrid
+  {
+  public:
+    static constexpr unsigned int n_vertices = dim + 1;
+    static constexpr unsigned int invalid    = static_cast<unsigned int>(-1);
+
+    /**
+     * Take ownership of a simplex triangulation (moved in) and build all
+     * per-cell data. Throws if the mesh is not made of simplices or has a
+     * degenerate cell.
+     */
+    explicit BackgroundGrid(Triangulation<dim> &&triangulation);
+
+    unsigned int
+    n_cells() const
+    {
+      return cell_nodes.size();
+    }
+
+    unsigned int
+    n_nodes() const
+    {
+      return node_positions.size();
+    }
+
+    /// Barycentric coordinates of @p x with respect to cell @p c.
+    std::array<double, dim + 1>
+    barycentric(const unsigned int c, const Point<dim> &x) const
+    {
+      std::array<double, dim + 1> lambda;
+      const Tensor<1, dim>        d   = x - cell_origin[c];
+      double                      sum = 0;
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          lambda[k + 1] = inverse_edge_matrix[c][k] * d;
+          sum += lambda[k + 1];
+        }
+      lambda[0] = 1. - sum;
+      return lambda;
+    }
+
+    /// Cartesian position from barycentric coordinates in cell @p c.
+    Point<dim>
+    position(const unsigned int c, const std::array<double, dim + 1> &l) const
+    {
+      Point<dim> x;
+      for (unsigned int k = 0; k < n_vertices; ++k)
+        x += l[k] * node_positions[cell_nodes[c][k]];
+      return x;
+    }
+
+    /// Index of the cell containing @p x by testing all cells (slow; used
+    /// only as a fallback and in tests). Returns invalid if none does.
+    unsigned int
+    find_cell_brute_force(const Point<dim> &x, const double tolerance) const;
+
+    const Triangulation<dim> &
+    get_triangulation() const
+    {
+      return triangulation;
+    }
+
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /// Smallest and largest cell altitude (for time step and checks).
+    double min_altitude_global;
+    double max_altitude_global;
+
+    /// Bounding box of the mesh.
+    Point<dim> lower_corner;
+    Point<dim> upper_corner;
+
+    // ---- per-node data -------------------------------------------------
+    std::vector<Point<dim>> node_positions;
+
+    // ---- per-cell data (index = active cell index) ---------------------
+    std::vector<std::array<unsigned int, dim + 1>> cell_nodes;
+    std::vector<Point<dim>>                        cell_origin;
+    /// Rows of the inverse edge matrix: lambda_{k+1} = row_k . (x - x_0).
+    std::vector<std::array<Tensor<1, dim>, dim>> inverse_edge_matrix;
+    /// Gradients of the dim+1 shape functions (constant per cell).
+    std::vector<std::array<Tensor<1, dim>, dim + 1>> shape_gradients;
+    std::vector<double>                              cell_volume;
+    /// Smallest altitude of the cell: min_k 1/|grad lambda_k|.
+    std::vector<double> cell_min_altitude;
+    /// Cell across the face opposite local vertex k, or invalid.
+    std::vector<std::array<unsigned int, dim + 1>> cell_neighbors;
+    /// deal.II boundary id of the face opposite local vertex k (only
+    /// meaningful where cell_neighbors is invalid).
+    std::vector<std::array<types::boundary_id, dim + 1>> face_boundary_id;
+
+    /// Cells grouped into colours such that no two cells of one colour share
+    /// a node: scatters within one colour can run in parallel without races,
+    /// and the summation order (hence the result) does not depend on the
+    /// number of threads.
+    std::vector<std::vector<unsigned int>> colours;
+    std::vector<unsigned int>              cell_colour;
+
+  private:
+    Triangulation<dim>  triangulation;
+    FE_SimplexP<dim>    fe;
+    DoFHandler<dim>     dof_handler;
+
+    void
+    compute_cell_data();
+    void
+    compute_neighbors();
+    void
+    compute_colouring();
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,119 @@
+#ifndef fsgmpm_grid_boundary_conditions_h
+#define fsgmpm_grid_boundary_conditions_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <fsgmpm/grid/background_grid.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /// The kind of wall a boundary id stands for.
+  enum class WallType
+  {
+    free,     ///< no constraint
+    fixed,    ///< all velocity components zero (no slip)
+    roller,   ///< normal velocity zero, tangential free (bilateral slip)
+    friction  ///< unilateral contact with Coulomb friction coefficient mu
+  };
+
+  struct WallCondition
+  {
+    WallType type     = WallType::free;
+    double   friction = 0.;
+  };
+
+  /**
+   * Parse "id: type[, id: type ...]" where type is free, fixed, roller or
+   * "friction <mu>". Throws with a message naming @p parameter_path.
+   */
+  std::map<types::boundary_id, WallCondition>
+  parse_wall_conditions(const std::string &text,
+                        const std::string &parameter_path);
+
+  /**
+   * Velocity constraints of the nodes on walls. The outward normal of a wall
+   * at a node is the normalised mean of the outward normals of the adjacent
+   * boundary faces with the same boundary id; the normals of different walls
+   * meeting at a node (corners) are orthogonalised.
+   */
+  template <int dim>
+  class NodalConstraints
+  {
+  public:
+    NodalConstraints(const BackgroundGrid<dim>                         &grid,
+                     const std::map<types::boundary_id, WallCondition> &walls);
+
+    /// Apply the wall conditions to a nodal velocity.
+    void
+    apply(const unsigned int node, Tensor<1, dim> &v) const
+    {
+      const unsigned int idx = node_to_entry[node];
+      if (idx == BackgroundGrid<dim>::invalid)
+        return;
+      const Entry &e = entries[idx];
+      if (e.fixed)
+        {
+          v = Tensor<1, dim>();
+          return;
+        }
+      for (unsigned int k = 0; k < e.n_walls; ++k)
+        {
+          const double vn = v * e.normal[k];
+          if (e.type[k] == WallType::roller)
+            v -= vn * e.normal[k];
+          else if (vn > 0) // friction wall: only when moving into it
+            {
+              Tensor<1, dim> vt  = v - vn * e.normal[k];
+              const double   vtn = vt.norm();
+              const double   red = e.friction[k] * vn;
+              v = (vtn > red) ? vt * (1. - red / vtn) : Tensor<1, dim>();
+            }
+        }
+    }
+
+    /// Remove the constrained components of a nodal vector (for the force
+    /// criterion of Eq. (30), which excludes support reactions).
+    void
+    project_out(const unsigned int node, Tensor<1, dim> &f) const
+    {
+      const unsigned int idx = node_to_entry[node];
+      if (idx == BackgroundGrid<dim>::invalid)
+        return;
+      const Entry &e = entries[idx];
+      if (e.fixed)
+        {
+          f = Tensor<1, dim>();
+          return;
+        }
+      for (unsigned int k = 0; k < e.n_walls; ++k)
+        f -= (f * e.normal[k]) * e.normal[k];
+    }
+
+    bool
+    is_constrained(const unsigned int node) const
+    {
+      return node_to_entry[node] != BackgroundGrid<dim>::invalid;
+    }
+
+  private:
+    struct Entry
+    {
+      bool                                   fixed   = false;
+      unsigned int                           n_walls = 0;
+      std::array<Tensor<1, dim>, dim>        normal;
+      std::array<WallType, dim>              type;
+      std::array<double, dim>                friction;
+    };
+    std::vector<Entry>        entries;
+    std::vector<unsigned int> node_to_entry;
+  };
+} // namespace fsgmpm
+
+#endif

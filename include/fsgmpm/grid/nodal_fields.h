@@ -1,0 +1,82 @@
+#ifndef fsgmpm_grid_nodal_fields_h
+#define fsgmpm_grid_nodal_fields_h
+
+#include <deal.II/base/tensor.h>
+
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Lumped nodal quantities of the background grid. Only the nodes of cells
+   * that hold material ("active nodes") are reset and updated each step, so
+   * empty parts of the domain cost nothing.
+   */
+  template <int dim>
+  struct NodalFields
+  {
+    void
+    resize(const unsigned int n_nodes)
+    {
+      mass.assign(n_nodes, 0.);
+      momentum.assign(n_nodes, Tensor<1, dim>());
+      internal_force.assign(n_nodes, Tensor<1, dim>());
+      external_force.assign(n_nodes, Tensor<1, dim>());
+      velocity.assign(n_nodes, Tensor<1, dim>());
+      acceleration.assign(n_nodes, Tensor<1, dim>());
+      active_stamp.assign(n_nodes, 0u);
+      active_nodes.clear();
+      stamp = 0;
+    }
+
+    /// Zero every field at the nodes that were active.
+    void
+    reset_active()
+    {
+      for (const unsigned int i : active_nodes)
+        {
+          mass[i]           = 0.;
+          momentum[i]       = Tensor<1, dim>();
+          internal_force[i] = Tensor<1, dim>();
+          external_force[i] = Tensor<1, dim>();
+          velocity[i]       = Tensor<1, dim>();
+          acceleration[i]   = Tensor<1, dim>();
+        }
+      active_nodes.clear();
+      ++stamp;
+    }
+
+    /// Mark the nodes of one occupied cell active (call after reset_active).
+    template <typename NodeArray>
+    void
+    activate(const NodeArray &nodes)
+    {
+      for (const unsigned int i : nodes)
+        if (active_stamp[i] != stamp)
+          {
+            active_stamp[i] = stamp;
+            active_nodes.push_back(i);
+          }
+    }
+
+    std::vector<double>         mass;
+    std::vector<Tensor<1, dim>> momentum;
+    /// F_int of Eq. (3), with the sign of the paper: M a = F_ext - F_int.
+    std::vector<Tensor<1, dim>> internal_force;
+    /// F_ext of Eq. (4): gravity and tractions.
+    std::vector<Tensor<1, dim>> external_force;
+    /// Nodal velocity: v^{n+1} after the grid update, then the remapped
+    /// velocity of Eq. (20) in MUSL.
+    std::vector<Tensor<1, dim>> velocity;
+    /// Constrained nodal acceleration a^n of Eq. (18).
+    std::vector<Tensor<1, dim>> acceleration;
+
+    std::vector<unsigned int> active_nodes;
+    std::vector<unsigned int> active_stamp;
+    unsigned int              stamp = 0;
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,47 @@
+#ifndef fsgmpm_io_monitor_file_h
+#define fsgmpm_io_monitor_file_h
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * monitors.csv: a header row, then one row per monitored step at full
+   * precision (%.17g). Each row goes out in one write and is flushed, so a
+   * killed run leaves only complete rows.
+   */
+  class MonitorFile
+  {
+  public:
+    MonitorFile(const std::string &file_name, const std::vector<std::string> &columns);
+    ~MonitorFile();
+    MonitorFile(const MonitorFile &) = delete;
+    MonitorFile &
+    operator=(const MonitorFile &) = delete;
+
+    void
+    write_row(const std::vector<double> &values);
+
+  private:
+    std::FILE   *file;
+    unsigned int n_columns;
+  };
+
+  /// Write summary.json (atomically) from ordered key/value pairs whose
+  /// values are already JSON (numbers, quoted strings or objects).
+  void
+  write_json(const std::string                                      &file_name,
+             const std::vector<std::pair<std::string, std::string>> &entries);
+
+  /// Quote a string for JSON.
+  std::string
+  json_string(const std::string &s);
+
+  /// A number for JSON at full precision (non-finite values become null).
+  std::string
+  json_number(const double x);
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,68 @@
+#ifndef fsgmpm_io_particle_output_h
+#define fsgmpm_io_particle_output_h
+
+#include <deal.II/base/data_out_base.h>
+
+#include <fsgmpm/particles/particle_store.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * VTU output of the material points. The store is not deal.II's
+   * ParticleHandler, so it provides its own patches (one vertex each) to
+   * DataOutInterface<0,dim>.
+   */
+  template <int dim>
+  class ParticleOutput : public DataOutInterface<0, dim>
+  {
+  public:
+    /// Build the patches from the current state of @p particles.
+    void
+    build_patches(const ParticleStore<dim> &particles);
+
+  private:
+    const std::vector<DataOutBase::Patch<0, dim>> &
+    get_patches() const override
+    {
+      return patches;
+    }
+    std::vector<std::string>
+    get_dataset_names() const override;
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+    get_nonscalar_data_ranges() const override;
+
+    std::vector<DataOutBase::Patch<0, dim>> patches;
+  };
+
+  /**
+   * Writes numbered VTU files and keeps the PVD collection of all of them
+   * up to date (both written atomically).
+   */
+  class PvdSeries
+  {
+  public:
+    PvdSeries(const std::string &directory, const std::string &base_name);
+
+    /// File name (without directory) for the next output and records it.
+    std::string
+    next_file(const double time);
+
+    /// Rewrite the .pvd file.
+    void
+    write_pvd() const;
+
+  private:
+    std::string                                 directory, base_name;
+    std::vector<std::pair<double, std::string>> records;
+  };
+} // namespace fsgmpm
+
+#endif

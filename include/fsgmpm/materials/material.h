@@ -1,0 +1,58 @@
+#ifndef fsgmpm_materials_material_h
+#define fsgmpm_materials_material_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Kinematics of one material point over a time step, always in 3x3 form
+   * (in 2D plane strain the zz, xz and yz components are zero).
+   */
+  struct PointKinematics
+  {
+    SymmetricTensor<2, 3> strain_rate; ///< symmetric part of grad v
+    Tensor<2, 3>          spin;        ///< W = (grad v - grad v^T)/2
+  };
+
+  /**
+   * Interface of a constitutive model. A material updates the Cauchy stress
+   * (tension positive, 3x3 also in 2D) of a contiguous run of points that
+   * all belong to it; one virtual call per run, never per point. A material
+   * knows nothing about the grid.
+   */
+  class Material
+  {
+  public:
+    virtual ~Material() = default;
+
+    virtual std::string
+    name() const = 0;
+
+    /// Update stresses of n points: kinematics[i] drives stress[i].
+    virtual void
+    update_stresses(const PointKinematics *kinematics,
+                    SymmetricTensor<2, 3> *stress,
+                    const unsigned int     n,
+                    const double           dt) const = 0;
+
+    /// Fastest wave speed at the given mass density (for the time step).
+    virtual double
+    wave_speed(const double density) const = 0;
+
+    /// Stored (recoverable) energy per unit volume at the given stress.
+    virtual double
+    strain_energy_density(const SymmetricTensor<2, 3> &stress) const = 0;
+
+    /// Mass density at which the material is created.
+    virtual double
+    reference_density() const = 0;
+  };
+} // namespace fsgmpm
+
+#endif

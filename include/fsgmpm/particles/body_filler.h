@@ -1,0 +1,42 @@
+#ifndef fsgmpm_particles_body_filler_h
+#define fsgmpm_particles_body_filler_h
+
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/particles/body_shape.h>
+#include <fsgmpm/particles/particle_store.h>
+
+#include <array>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * Barycentric coordinates of the material points placed in one simplex:
+   * the centroids of the children of L levels of regular (Bey) refinement,
+   * so (2^dim)^L points of exactly equal volume share. Throws if
+   * @p particles_per_cell is not 1, 4, 16, 64 (2D) or 1, 8, 64, 512 (3D).
+   */
+  template <int dim>
+  std::vector<std::array<double, dim + 1>>
+  reference_particle_points(const unsigned int particles_per_cell);
+
+  /**
+   * Fill @p shape with material points: every sub-cell centroid of every
+   * background cell that lies inside the shape becomes a point with volume
+   * (cell volume / particles per cell) and mass density * volume. Throws if
+   * the shape reaches outside the mesh or holds no point. Returns the number
+   * of points added.
+   */
+  template <int dim>
+  unsigned int
+  fill_body(const BackgroundGrid<dim> &grid,
+            const BodyShape<dim>      &shape,
+            const unsigned int         particles_per_cell,
+            const double               density,
+            const Tensor<1, dim>      &initial_velocity,
+            const std::uint16_t        material_id,
+            const std::uint16_t        body_id,
+            ParticleStore<dim>        &particles);
+} // namespace fsgmpm
+
+#endif

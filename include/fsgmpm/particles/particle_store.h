@@ -1,0 +1,85 @@
+#ifndef fsgmpm_particles_particle_store_h
+#define fsgmpm_particles_particle_store_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Material points in structure-of-arrays storage, kept sorted by the
+   * background cell that contains them so that every per-cell quantity
+   * (velocity gradient, shape gradients, node indices) is read once and
+   * reused for all points of the cell.
+   *
+   * The stress is always a 3x3 symmetric tensor: in 2D (plane strain) it
+   * keeps sigma_zz. It is the Cauchy stress, tension positive.
+   */
+  template <int dim>
+  class ParticleStore
+  {
+  public:
+    unsigned int
+    size() const
+    {
+      return position.size();
+    }
+
+    /// Append one point; its cell must already be known.
+    void
+    add(const Point<dim>            &x,
+        const unsigned int           cell,
+        const double                 m,
+        const double                 v0,
+        const Tensor<1, dim>        &vel,
+        const SymmetricTensor<2, 3> &sigma,
+        const std::uint16_t          material,
+        const std::uint16_t          body);
+
+    /**
+     * Counting sort by cell (stable, so the order inside a cell, and hence
+     * every sum, is deterministic); rebuilds cell_start and occupied_cells.
+     */
+    void
+    sort_by_cell(const unsigned int n_cells);
+
+    /// Remove the points with flag != 0 (keeps the order of the others).
+    void
+    remove_flagged(const std::vector<std::uint8_t> &flag);
+
+    /// Memory held per point in bytes (all arrays, including scratch).
+    double
+    bytes_per_particle() const;
+
+    /// Particles of cell c are [cell_start[c], cell_start[c+1]).
+    std::vector<unsigned int> cell_start;
+    std::vector<unsigned int> occupied_cells;
+
+    std::vector<Point<dim>>            position;
+    std::vector<Tensor<1, dim>>        velocity;
+    std::vector<SymmetricTensor<2, 3>> stress;
+    std::vector<double>                mass;
+    std::vector<double>                volume;
+    /// Initial volume (reference for the deformation state J = V/V0).
+    std::vector<double>        initial_volume;
+    std::vector<unsigned int>  cell;
+    std::vector<std::uint16_t> material_id;
+    std::vector<std::uint16_t> body_id;
+
+  private:
+    template <typename T>
+    void
+    permute(std::vector<T> &v, const std::vector<unsigned int> &order);
+
+    std::vector<unsigned int> order_scratch;
+    std::vector<char>         value_scratch;
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,41 @@
+#ifndef fsgmpm_scene_body_h
+#define fsgmpm_scene_body_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <fsgmpm/materials/material.h>
+#include <fsgmpm/particles/body_shape.h>
+
+#include <memory>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * One body of a scene, as given in subsection Bodies/Body N: the shape it
+   * fills, its material and its initial state.
+   */
+  template <int dim>
+  struct BodyDescription
+  {
+    std::string                      path; ///< "Bodies/Body N"
+    std::unique_ptr<BodyShape<dim>>  shape;
+    std::unique_ptr<Material>        material;
+    unsigned int                     particles_per_cell;
+    double                           density;
+    Tensor<1, dim>                   initial_velocity;
+    /// Initial stress: none, or geostatic (sigma_yy = -rho g (y_top - y),
+    /// sigma_xx = sigma_zz = K0 sigma_yy) from the body's top surface.
+    bool   geostatic;
+    double k0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Parse subsection Bodies (all bodies). Errors name the full path.
+    static std::vector<BodyDescription<dim>>
+    parse_bodies(ParameterHandler &prm);
+  };
+} // namespace fsgmpm
+
+#endif

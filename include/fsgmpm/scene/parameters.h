@@ -1,0 +1,84 @@
+#ifndef fsgmpm_scene_parameters_h
+#define fsgmpm_scene_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <fsgmpm/grid/boundary_conditions.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /// The largest number of bodies a scene may declare.
+  constexpr unsigned int max_n_bodies = 8;
+
+  /**
+   * All run parameters that do not depend on the bodies, read from a
+   * ParameterHandler and validated (including the open intervals that
+   * deal.II's patterns cannot express). Every error message names the full
+   * parameter path.
+   */
+  template <int dim>
+  struct Parameters
+  {
+    /// Declare every parameter of fsgmpm (also those of bodies/materials).
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    explicit Parameters(ParameterHandler &prm);
+
+    // Simulation
+    double         end_time;
+    unsigned int   max_steps;
+    double         courant;
+    double         fixed_dt;
+    bool           use_musl;
+    Tensor<1, dim> gravity;
+    double         gravity_ramp_time;
+    bool           stop_when_converged;
+    unsigned int   n_threads;
+
+    // Damping and dynamic relaxation (Eq. 30)
+    double       local_damping;
+    bool         kinetic_damping;
+    double       energy_tolerance;
+    double       force_tolerance;
+    unsigned int convergence_window;
+
+    // Stability guard
+    double       ke_growth_factor;
+    unsigned int ke_growth_window;
+
+    // Grid
+    std::string                                 grid_type;
+    Point<dim>                                  lower_corner, upper_corner;
+    std::vector<unsigned int>                   subdivisions;
+    std::string                                 mesh_file;
+    std::map<types::boundary_id, WallCondition> walls;
+
+    // Output
+    std::string  output_directory;
+    double       output_interval;
+    unsigned int output_every_steps;
+    bool         write_particles;
+    bool         write_grid;
+    unsigned int monitor_every_steps;
+    bool         quiet;
+  };
+
+  /// Read a list of dim doubles, throwing a message that names @p path.
+  template <int dim>
+  Tensor<1, dim>
+  parse_vector(const std::string &text, const std::string &path);
+
+  /// The dimension requested by Simulation/Dimension.
+  unsigned int
+  get_dimension(ParameterHandler &prm);
+} // namespace fsgmpm
+
+#endif

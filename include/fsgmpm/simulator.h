@@ -1,0 +1,180 @@
+#ifndef fsgmpm_simulator_h
+#define fsgmpm_simulator_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/boundary_conditions.h>
+#include <fsgmpm/grid/nodal_fields.h>
+#include <fsgmpm/io/particle_output.h>
+#include <fsgmpm/materials/material.h>
+#include <fsgmpm/particles/particle_store.h>
+#include <fsgmpm/scene/body.h>
+#include <fsgmpm/scene/parameters.h>
+
+#include <array>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fsgmpm
+{
+  class MonitorFile;
+
+  /// Global quantities monitored every step (common columns of SPEC 6).
+  struct Monitors
+  {
+    double       kinetic_energy    = 0; ///< sum_p m_p |v_p|^2 / 2
+    double       strain_energy     = 0; ///< sum_p V_p w(sigma_p)
+    double       potential_energy  = 0; ///< -sum_p m_p g . x_p
+    double       external_work     = 0; ///< accumulated F_ext . du (Eq. 30)
+    double       dissipated_energy = 0; ///< removed by damping
+    double       dr_energy_ratio   = 0; ///< Eq. (30): E_kin / W_ext (nodal)
+    double       dr_force_ratio    = 0; ///< Eq. (30): |F_ext-F_int|/|F_ext|
+    unsigned int lost_particles    = 0;
+  };
+
+  /**
+   * Owns the grid, the particles, the materials and the output, and runs the
+   * explicit time loop of Stages. The constructor reads and validates the
+   * whole scene and builds everything, but writes nothing; run() creates
+   * the output directory and writes as it goes.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    explicit Simulator(ParameterHandler &prm);
+    ~Simulator();
+
+    /// Run to the end (time, steps, convergence or instability) and write
+    /// output. Returns the termination reason.
+    std::string
+    run();
+
+    /// Advance one time step without any file output. Returns false and
+    /// sets the termination reason when the run must stop.
+    bool
+    advance();
+
+    // --- state access (tests, postprocessing) ---------------------------
+    const ParticleStore<dim> &
+    get_particles() const
+    {
+      return particles;
+    }
+    ParticleStore<dim> &
+    get_particles()
+    {
+      return particles;
+    }
+    const BackgroundGrid<dim> &
+    get_grid() const
+    {
+      return *grid;
+    }
+    const NodalFields<dim> &
+    get_nodes() const
+    {
+      return nodes;
+    }
+    const Monitors &
+    get_monitors() const
+    {
+      return monitors;
+    }
+    const std::vector<std::unique_ptr<Material>> &
+    get_materials() const
+    {
+      return materials;
+    }
+    double
+    get_time() const
+    {
+      return time;
+    }
+    unsigned int
+    get_step() const
+    {
+      return step;
+    }
+    double
+    get_dt() const
+    {
+      return dt;
+    }
+    const std::string &
+    get_termination() const
+    {
+      return termination;
+    }
+    /// Diagnosis when termination == "unstable".
+    const std::string &
+    get_diagnosis() const
+    {
+      return diagnosis;
+    }
+    /// Steps for which both Eq. (30) ratios have been below tolerance.
+    unsigned int
+    get_converged_steps() const
+    {
+      return converged_steps;
+    }
+    const Parameters<dim> &
+    get_parameters() const
+    {
+      return params;
+    }
+
+    /// Names of the timed stages, in step order.
+    static const std::vector<std::string> &
+    stage_names();
+    const std::vector<double> &
+    get_stage_seconds() const
+    {
+      return stage_seconds;
+    }
+
+  private:
+    void
+    setup_bodies();
+    void
+    compute_monitors();
+    bool
+    check_stability(const double displacement_ratio);
+    void
+    write_output();
+    void
+    write_summary(const double wall_seconds) const;
+    Tensor<1, dim>
+    current_gravity() const;
+
+    Parameters<dim>                        params;
+    std::vector<BodyDescription<dim>>      bodies;
+    std::unique_ptr<BackgroundGrid<dim>>   grid;
+    std::unique_ptr<NodalConstraints<dim>> constraints;
+    NodalFields<dim>                       nodes;
+    ParticleStore<dim>                     particles;
+    std::vector<std::unique_ptr<Material>> materials;
+
+    double       time = 0, dt = 0, dt_min = 0, dt_max = 0;
+    unsigned int step = 0;
+    Monitors     monitors;
+    double       previous_kinetic_energy = 0;
+    unsigned int converged_steps         = 0;
+    std::string  termination             = "end_time";
+    std::string  diagnosis;
+    /// (kinetic+strain energy, external work) of the last window of steps.
+    std::deque<std::array<double, 2>> energy_history;
+
+    std::vector<double>          stage_seconds;
+    std::unique_ptr<MonitorFile> monitor_file;
+    ParticleOutput<dim>          particle_output;
+    std::unique_ptr<PvdSeries>   particle_series, grid_series;
+    double                       next_output_time = 0;
+    unsigned long long           particle_updates = 0;
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,69 @@
+#ifndef fsgmpm_step_cell_loops_h
+#define fsgmpm_step_cell_loops_h
+
+#include <deal.II/base/parallel.h>
+
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/particles/particle_store.h>
+
+#include <vector>
+
+namespace fsgmpm
+{
+  namespace CellLoops
+  {
+    /// Run f(begin, end) over [0, n) in parallel chunks (TBB through deal.II).
+    template <typename Function>
+    void
+    parallel_range(const unsigned int n, const Function &f, const unsigned int grain = 256)
+    {
+      dealii::parallel::apply_to_subranges(0u, n, f, grain);
+    }
+
+    /**
+     * Call f(cell) for every occupied cell, colour by colour, in parallel
+     * within a colour. No two cells of a colour share a node, so f may add
+     * to the nodes of its cell without locks, and every node receives its
+     * contributions in the same order whatever the number of threads.
+     */
+    template <int dim, typename Function>
+    void
+    scatter_by_colour(const BackgroundGrid<dim> &grid,
+                      const ParticleStore<dim>  &particles,
+                      const Function            &f)
+    {
+      thread_local std::vector<std::vector<unsigned int>> by_colour;
+      by_colour.resize(grid.colours.size());
+      for (auto &v : by_colour)
+        v.clear();
+      for (const unsigned int c : particles.occupied_cells)
+        by_colour[grid.cell_colour[c]].push_back(c);
+      for (const auto &cells : by_colour)
+        parallel_range(
+          cells.size(),
+          [&](const unsigned int b, const unsigned int e) {
+            for (unsigned int i = b; i < e; ++i)
+              f(cells[i]);
+          },
+          16);
+    }
+
+    /// Call f(cell) for every occupied cell in parallel (no scatter).
+    template <int dim, typename Function>
+    void
+    for_each_occupied_cell(const ParticleStore<dim> &particles,
+                           const Function           &f)
+    {
+      const auto &cells = particles.occupied_cells;
+      parallel_range(
+        cells.size(),
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int i = b; i < e; ++i)
+            f(cells[i]);
+        },
+        16);
+    }
+  } // namespace CellLoops
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,112 @@
+#ifndef fsgmpm_step_stages_h
+#define fsgmpm_step_stages_h
+
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/boundary_conditions.h>
+#include <fsgmpm/grid/nodal_fields.h>
+#include <fsgmpm/materials/material.h>
+#include <fsgmpm/particles/particle_store.h>
+
+#include <memory>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * The explicit MPM step as a fixed sequence of named stages (paper Fig. 1,
+   * Eqs. 17-21). A stage knows nothing about the scene; the Simulator calls
+   *
+   *   MUSL (default):  p2g -> grid_update -> g2p -> remap -> stress_update
+   *                    -> update_positions -> relocate
+   *   USL:             p2g -> grid_update -> g2p -> stress_update
+   *                    -> update_positions -> relocate
+   *
+   * Particles must be sorted by cell (ParticleStore::sort_by_cell) before
+   * p2g. Scatters run in parallel over the cells of one colour, so they are
+   * race free and their result does not depend on the number of threads.
+   */
+  namespace Stages
+  {
+    /// Stage 1 (Eqs. 3, 4, 17): lumped mass, momentum, internal force; the
+    /// nodes of occupied cells become the active nodes.
+    template <int dim>
+    void
+    p2g(const BackgroundGrid<dim>     &grid,
+        const ParticleStore<dim>      &particles,
+        NodalFields<dim>              &nodes);
+
+    /// What grid_update reports for energy bookkeeping and Eq. (30).
+    struct GridUpdateResult
+    {
+      double external_work_increment = 0; ///< dt * F_ext . v_mid
+      double damping_work_increment  = 0; ///< energy removed by damping
+      double unbalanced_norm_sq      = 0; ///< |F_ext - F_int|^2, free comps
+      double external_norm_sq        = 0; ///< |F_ext|^2, free components
+    };
+
+    /// Stage 2 (Eq. 18): a = (F_ext - F_int + F_damp)/m with gravity in
+    /// F_ext, local non-viscous damping F_damp = -alpha |F_unbal| sign(v),
+    /// wall conditions on v^{n+1} = v^n + dt a, and a consistent with them.
+    template <int dim>
+    GridUpdateResult
+    grid_update(const NodalConstraints<dim> &constraints,
+                const Tensor<1, dim>        &gravity,
+                const double                 damping_alpha,
+                const double                 dt,
+                NodalFields<dim>            &nodes);
+
+    /// Stage 3 (Eq. 19): v_p += dt sum_i N_i(x_p) a_i.
+    template <int dim>
+    void
+    g2p(const BackgroundGrid<dim> &grid,
+        const NodalFields<dim>    &nodes,
+        const double               dt,
+        ParticleStore<dim>        &particles);
+
+    /// Stage 4 (Eq. 20): nodal velocities from the updated particle momenta,
+    /// with the wall conditions (suppresses the small-mass-node instability).
+    template <int dim>
+    void
+    remap(const BackgroundGrid<dim>   &grid,
+          const ParticleStore<dim>    &particles,
+          const NodalConstraints<dim> &constraints,
+          NodalFields<dim>            &nodes);
+
+    /// Stage 5: velocity gradient (constant per cell on linear simplices),
+    /// strain rate and spin, stress update per material, and the volume
+    /// update V <- V det(I + dt grad v).
+    template <int dim>
+    void
+    stress_update(const BackgroundGrid<dim>                    &grid,
+                  const NodalFields<dim>                       &nodes,
+                  const std::vector<std::unique_ptr<Material>> &materials,
+                  const double                                  dt,
+                  ParticleStore<dim>                           &particles);
+
+    /// Stage 6 (Eq. 21): x_p += dt sum_i N_i(x_p) v_i. Returns the largest
+    /// ratio of a point's displacement to its cell's smallest altitude
+    /// (> 1 means a point crossed more than one cell: unstable).
+    template <int dim>
+    double
+    update_positions(const BackgroundGrid<dim> &grid,
+                     const NodalFields<dim>    &nodes,
+                     const double               dt,
+                     ParticleStore<dim>        &particles);
+
+    /// Stage 7: locate every point again (walk from its old cell), remove
+    /// points that left the mesh and sort by cell. Returns the number lost.
+    template <int dim>
+    unsigned int
+    relocate(const BackgroundGrid<dim> &grid, ParticleStore<dim> &particles);
+
+    /// Stable time step C * min over points of h_cell / (c_p + |v_p|).
+    template <int dim>
+    double
+    stable_time_step(const BackgroundGrid<dim>                    &grid,
+                     const ParticleStore<dim>                     &particles,
+                     const std::vector<std::unique_ptr<Material>> &materials,
+                     const double                                  courant);
+  } // namespace Stages
+} // namespace fsgmpm
+
+#endif

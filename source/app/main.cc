@@ -1,0 +1,190 @@
+/**
+ * fsgmpm: coupled FEM-MPM solver for fluid-soil-geomembrane interaction.
+ *
+ *   fsgmpm [scene.prm] [--set "Section/Sub/Name=value"]...
+ *   fsgmpm --help | --print-parameters [scene.prm] | --version
+ *
+ * The whole command line and the scene are validated (and the grid and
+ * bodies built) before anything is written.
+ */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <fsgmpm/scene/parameters.h>
+#include <fsgmpm/simulator.h>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using namespace dealii;
+
+  const char *usage =
+    "Usage: fsgmpm [scene.prm] [--set \"Section/Sub/Name=value\"]...\n"
+    "       fsgmpm --print-parameters [scene.prm] [--set ...]\n"
+    "       fsgmpm --help | --version\n"
+    "\n"
+    "Runs the scene described by the parameter file (without one, the\n"
+    "built-in default scene: an elastic block dropping onto the ground).\n"
+    "Output (VTU/PVD, monitors.csv, summary.json) goes to Output/Directory.\n"
+    "\n"
+    "  --set \"Path/Name=value\"  override one parameter after reading the\n"
+    "                           file, e.g. --set \"Simulation/End time=0.1\"\n"
+    "  --print-parameters       print every parameter with its current value,\n"
+    "                           default, allowed range and documentation\n"
+    "  --help                   this text\n"
+    "  --version                print the version\n"
+    "\n"
+    "Exit status: 0 finished (end time or converged), 1 bad input or error,\n"
+    "3 the run became unstable (see the diagnosis and summary.json).\n";
+
+  /// Apply one --set override; errors name the full path.
+  void
+  apply_override(ParameterHandler &prm, const std::string &arg)
+  {
+    const auto eq = arg.find('=');
+    AssertThrow(eq != std::string::npos && eq > 0,
+                ExcMessage("--set needs \"Section/Sub/Name=value\"; got <" +
+                           arg + ">."));
+    const std::string path  = Utilities::trim(arg.substr(0, eq));
+    const std::string value = Utilities::trim(arg.substr(eq + 1));
+    std::vector<std::string> parts = Utilities::split_string_list(path, '/');
+    const std::string        name  = parts.back();
+    parts.pop_back();
+    try
+      {
+        prm.get(parts, name);
+      }
+    catch (...)
+      {
+        AssertThrow(false,
+                    ExcMessage("--set: there is no parameter <" + path +
+                               ">. Run fsgmpm --print-parameters for the "
+                               "full list."));
+      }
+    for (const auto &s : parts)
+      prm.enter_subsection(s);
+    try
+      {
+        prm.set(name, value);
+      }
+    catch (ExceptionBase &e)
+      {
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          prm.leave_subsection();
+        std::ostringstream info;
+        e.print_info(info);
+        AssertThrow(false,
+                    ExcMessage("--set: invalid value <" + value + "> for <" +
+                               path + ">: " + Utilities::trim(info.str())));
+      }
+    for (unsigned int i = 0; i < parts.size(); ++i)
+      prm.leave_subsection();
+  }
+
+  template <int dim>
+  int
+  run_scene(ParameterHandler &prm)
+  {
+    fsgmpm::Simulator<dim> simulator(prm);
+    const std::string      termination = simulator.run();
+    return termination == "unstable" ? 3 : 0;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      std::string              prm_file;
+      std::vector<std::string> overrides;
+      bool                     print_parameters = false;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--help" || arg == "-h")
+            {
+              std::cout << usage;
+              return 0;
+            }
+          else if (arg == "--version")
+            {
+              std::cout << "fsgmpm " << FSGMPM_VERSION << std::endl;
+              return 0;
+            }
+          else if (arg == "--print-parameters")
+            print_parameters = true;
+          else if (arg == "--set")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--set needs an argument "
+                                     "\"Section/Sub/Name=value\"."));
+              overrides.push_back(argv[++i]);
+            }
+          else if (arg.rfind("--set=", 0) == 0)
+            overrides.push_back(arg.substr(6));
+          else if (arg.rfind("-", 0) == 0)
+            {
+              AssertThrow(false,
+                          ExcMessage("Unknown option <" + arg +
+                                     ">. Run fsgmpm --help."));
+            }
+          else
+            {
+              AssertThrow(prm_file.empty(),
+                          ExcMessage("Only one parameter file may be given; "
+                                     "got <" +
+                                     prm_file + "> and <" + arg + ">."));
+              prm_file = arg;
+            }
+        }
+
+      ParameterHandler prm;
+      fsgmpm::Parameters<2>::declare_parameters(prm);
+      if (!prm_file.empty())
+        {
+          AssertThrow(std::filesystem::is_regular_file(prm_file),
+                      ExcMessage("Cannot open the parameter file <" +
+                                 prm_file + ">."));
+          prm.parse_input(prm_file);
+        }
+      for (const auto &o : overrides)
+        apply_override(prm, o);
+
+      if (print_parameters)
+        {
+          prm.print_parameters(std::cout, ParameterHandler::Text);
+          return 0;
+        }
+
+      const unsigned int dim = fsgmpm::get_dimension(prm);
+      return dim == 2 ? run_scene<2>(prm) : run_scene<3>(prm);
+    }
+  catch (dealii::ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      std::cerr << "fsgmpm: error: " << dealii::Utilities::trim(info.str())
+                << std::endl;
+      return 1;
+    }
+  catch (std::exception &e)
+    {
+      std::cerr << "fsgmpm: error: " << e.what() << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "fsgmpm: error: unknown exception" << std::endl;
+      return 1;
+    }
+}

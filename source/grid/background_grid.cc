@@ -1,0 +1,228 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/grid/background_grid.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+namespace fsgmpm
+{
+  template <int dim>
+  BackgroundGrid<dim>::BackgroundGrid(Triangulation<dim> &&tria)
+    : triangulation(std::move(tria))
+    , fe(1)
+    , dof_handler(triangulation)
+  {
+    AssertThrow(triangulation.n_active_cells() > 0,
+                ExcMessage("The background grid has no cells."));
+    AssertThrow(triangulation.all_reference_cells_are_simplex(),
+                ExcMessage("The background grid must consist of simplices "
+                           "(triangles in 2D, tetrahedra in 3D). Convert "
+                           "quadrilateral or hexahedral meshes before use."));
+    dof_handler.distribute_dofs(fe);
+    compute_cell_data();
+    compute_neighbors();
+    compute_colouring();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::compute_cell_data()
+  {
+    const unsigned int n = triangulation.n_active_cells();
+    cell_nodes.resize(n);
+    cell_origin.resize(n);
+    inverse_edge_matrix.resize(n);
+    shape_gradients.resize(n);
+    cell_volume.resize(n);
+    cell_min_altitude.resize(n);
+    face_boundary_id.resize(n);
+    node_positions.resize(dof_handler.n_dofs());
+
+    min_altitude_global = std::numeric_limits<double>::max();
+    max_altitude_global = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower_corner[d] = std::numeric_limits<double>::max();
+        upper_corner[d] = -std::numeric_limits<double>::max();
+      }
+
+    double factorial = 1;
+    for (unsigned int d = 2; d <= dim; ++d)
+      factorial *= d;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const unsigned int c = cell->active_cell_index();
+        AssertThrow(cell->n_vertices() == n_vertices,
+                    ExcMessage("Only simplex cells are supported."));
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            const unsigned int node = cell->vertex_dof_index(v, 0);
+            cell_nodes[c][v]        = node;
+            node_positions[node]    = cell->vertex(v);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower_corner[d] = std::min(lower_corner[d], cell->vertex(v)[d]);
+                upper_corner[d] = std::max(upper_corner[d], cell->vertex(v)[d]);
+              }
+          }
+
+        // Edge matrix E with columns x_k - x_0; lambda_{1..dim} = E^{-1}(x-x_0).
+        Tensor<2, dim> edges;
+        const Point<dim> x0 = cell->vertex(0);
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            edges[d][k] = cell->vertex(k + 1)[d] - x0[d];
+        const double det = determinant(edges);
+        double       scale = 1;
+        for (unsigned int k = 0; k < dim; ++k)
+          scale *= (cell->vertex(k + 1) - x0).norm();
+        AssertThrow(std::abs(det) > 1e-12 * scale,
+                    ExcMessage("Background-grid cell " + std::to_string(c) +
+                               " near " +
+                               Utilities::to_string(cell->center()[0]) +
+                               " is degenerate (zero volume)."));
+        const Tensor<2, dim> inv = invert(edges);
+
+        cell_origin[c]   = x0;
+        cell_volume[c]   = std::abs(det) / factorial;
+        Tensor<1, dim> grad0;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            inverse_edge_matrix[c][k] = inv[k];
+            shape_gradients[c][k + 1] = inv[k];
+            grad0 -= inv[k];
+          }
+        shape_gradients[c][0] = grad0;
+
+        double hmin = std::numeric_limits<double>::max();
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          hmin = std::min(hmin, 1. / shape_gradients[c][k].norm());
+        cell_min_altitude[c] = hmin;
+        min_altitude_global  = std::min(min_altitude_global, hmin);
+        max_altitude_global  = std::max(max_altitude_global, hmin);
+
+        // Boundary ids, stored by the local vertex opposite the face.
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          face_boundary_id[c][k] = numbers::internal_face_boundary_id;
+        for (unsigned int f = 0; f < cell->n_faces(); ++f)
+          if (cell->face(f)->at_boundary())
+            {
+              // The face's vertices are all cell vertices but one.
+              unsigned int opposite = invalid;
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  bool on_face = false;
+                  for (unsigned int fv = 0; fv < cell->face(f)->n_vertices();
+                       ++fv)
+                    if (cell->face(f)->vertex_index(fv) == cell->vertex_index(v))
+                      on_face = true;
+                  if (!on_face)
+                    opposite = v;
+                }
+              Assert(opposite != invalid, ExcInternalError());
+              face_boundary_id[c][opposite] = cell->face(f)->boundary_id();
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::compute_neighbors()
+  {
+    // Match faces by their sorted node triples/pairs; independent of deal.II's
+    // face numbering and orientation conventions for simplices.
+    using FaceKey = std::array<unsigned int, dim>;
+    std::map<FaceKey, std::pair<unsigned int, unsigned int>> faces;
+    cell_neighbors.assign(n_cells(), {});
+    for (auto &nb : cell_neighbors)
+      nb.fill(invalid);
+
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      for (unsigned int k = 0; k < n_vertices; ++k)
+        {
+          FaceKey      key;
+          unsigned int j = 0;
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            if (v != k)
+              key[j++] = cell_nodes[c][v];
+          std::sort(key.begin(), key.end());
+          const auto it = faces.find(key);
+          if (it == faces.end())
+            faces.emplace(key, std::make_pair(c, k));
+          else
+            {
+              const auto [other, other_k]          = it->second;
+              cell_neighbors[c][k]                 = other;
+              cell_neighbors[other][other_k]       = c;
+              faces.erase(it);
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::compute_colouring()
+  {
+    // Greedy colouring of the cell-node-cell graph, in cell order so that the
+    // result is deterministic.
+    std::vector<std::vector<unsigned int>> node_cells(n_nodes());
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      for (const unsigned int node : cell_nodes[c])
+        node_cells[node].push_back(c);
+
+    cell_colour.assign(n_cells(), invalid);
+    std::vector<unsigned int> used_stamp;
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      {
+        for (const unsigned int node : cell_nodes[c])
+          for (const unsigned int other : node_cells[node])
+            if (cell_colour[other] != invalid)
+              {
+                if (cell_colour[other] >= used_stamp.size())
+                  used_stamp.resize(cell_colour[other] + 1, invalid);
+                used_stamp[cell_colour[other]] = c;
+              }
+        unsigned int colour = 0;
+        while (colour < used_stamp.size() && used_stamp[colour] == c)
+          ++colour;
+        cell_colour[c] = colour;
+        if (colour >= colours.size())
+          colours.resize(colour + 1);
+        colours[colour].push_back(c);
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::find_cell_brute_force(const Point<dim> &x,
+                                             const double      tolerance) const
+  {
+    unsigned int best        = invalid;
+    double       best_excess = -std::numeric_limits<double>::max();
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      {
+        const auto   l    = barycentric(c, x);
+        const double lmin = *std::min_element(l.begin(), l.end());
+        if (lmin >= -tolerance && lmin > best_excess)
+          {
+            best        = c;
+            best_excess = lmin;
+          }
+      }
+    return best;
+  }
+
+  template class BackgroundGrid<2>;
+  template class BackgroundGrid<3>;
+} // namespace fsgmpm

@@ -1,0 +1,195 @@
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <fsgmpm/grid/mesh_generation.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+
+namespace fsgmpm
+{
+  namespace MeshGeneration
+  {
+    template <int dim>
+    void
+    make_box(const Point<dim>                &lower,
+             const Point<dim>                &upper,
+             const std::vector<unsigned int> &subdivisions,
+             Triangulation<dim>              &triangulation)
+    {
+      AssertThrow(subdivisions.size() == dim,
+                  ExcMessage("Grid/Subdivisions needs one entry per "
+                             "coordinate direction (" +
+                             std::to_string(dim) + ")."));
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          AssertThrow(upper[d] > lower[d],
+                      ExcMessage("Grid/Upper corner must be larger than "
+                                 "Grid/Lower corner in every direction."));
+          AssertThrow(subdivisions[d] > 0,
+                      ExcMessage("Grid/Subdivisions must be positive."));
+        }
+      GridGenerator::subdivided_hyper_rectangle_with_simplices(triangulation,
+                                                               subdivisions,
+                                                               lower,
+                                                               upper);
+      colorize_bounding_box(triangulation);
+    }
+
+
+
+    template <int dim>
+    void
+    read_gmsh(const std::string &file_name, Triangulation<dim> &triangulation)
+    {
+      std::ifstream in(file_name);
+      AssertThrow(in.good(),
+                  ExcMessage("Grid/Mesh file: cannot open the Gmsh file <" +
+                             file_name + ">."));
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(triangulation);
+      grid_in.read_msh(in);
+      AssertThrow(triangulation.all_reference_cells_are_simplex(),
+                  ExcMessage("Grid/Mesh file <" + file_name +
+                             "> must contain only triangles (2D) or "
+                             "tetrahedra (3D)."));
+    }
+
+
+
+    void
+    extrude_to_tetrahedra(const Triangulation<2> &tria_2d,
+                          const double            thickness,
+                          Triangulation<3>       &tria_3d)
+    {
+      AssertThrow(thickness > 0,
+                  ExcMessage("The extrusion thickness must be positive."));
+      const auto        &v2 = tria_2d.get_vertices();
+      const unsigned int nv = v2.size();
+      std::vector<Point<3>> vertices(2 * nv);
+      for (unsigned int i = 0; i < nv; ++i)
+        {
+          vertices[i]      = Point<3>(v2[i][0], v2[i][1], 0.);
+          vertices[nv + i] = Point<3>(v2[i][0], v2[i][1], thickness);
+        }
+
+      std::vector<CellData<3>> cells;
+      for (const auto &cell : tria_2d.active_cell_iterators())
+        {
+          AssertThrow(cell->n_vertices() == 3,
+                      ExcMessage("Only triangles can be extruded."));
+          std::array<unsigned int, 3> t = {{cell->vertex_index(0),
+                                            cell->vertex_index(1),
+                                            cell->vertex_index(2)}};
+          std::sort(t.begin(), t.end());
+          const unsigned int b0 = t[0], b1 = t[1], b2 = t[2];
+          const unsigned int t0 = nv + t[0], t1 = nv + t[1], t2 = nv + t[2];
+          // Each quadrilateral side (i < j) is cut by the diagonal from the
+          // bottom of vertex i to the top of vertex j.
+          const std::array<std::array<unsigned int, 4>, 3> tets = {
+            {{{b0, b1, b2, t2}}, {{b0, b1, t1, t2}}, {{b0, t0, t1, t2}}}};
+          for (auto tet : tets)
+            {
+              Tensor<2, 3> e;
+              for (unsigned int k = 0; k < 3; ++k)
+                for (unsigned int d = 0; d < 3; ++d)
+                  e[d][k] = vertices[tet[k + 1]][d] - vertices[tet[0]][d];
+              if (determinant(e) < 0)
+                std::swap(tet[2], tet[3]);
+              CellData<3> c(4);
+              for (unsigned int k = 0; k < 4; ++k)
+                c.vertices[k] = tet[k];
+              cells.push_back(c);
+            }
+        }
+      tria_3d.clear();
+      tria_3d.create_triangulation(vertices, cells, SubCellData());
+
+      // Boundary ids: lateral faces from the 2D edges, z faces 4 and 5.
+      std::map<std::pair<unsigned int, unsigned int>, types::boundary_id> edge_id;
+      for (const auto &cell : tria_2d.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              auto a = cell->face(f)->vertex_index(0);
+              auto b = cell->face(f)->vertex_index(1);
+              edge_id[{std::min(a, b), std::max(a, b)}] =
+                cell->face(f)->boundary_id();
+            }
+      for (const auto &cell : tria_3d.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto   face = cell->face(f);
+              const double zc   = face->center()[2];
+              if (std::abs(zc) < 1e-12 * thickness)
+                face->set_boundary_id(4);
+              else if (std::abs(zc - thickness) < 1e-12 * thickness)
+                face->set_boundary_id(5);
+              else
+                {
+                  std::vector<unsigned int> base;
+                  for (unsigned int v = 0; v < 3; ++v)
+                    {
+                      const unsigned int i = face->vertex_index(v) % nv;
+                      if (std::find(base.begin(), base.end(), i) == base.end())
+                        base.push_back(i);
+                    }
+                  AssertThrow(base.size() == 2, ExcInternalError());
+                  const auto it = edge_id.find(
+                    {std::min(base[0], base[1]), std::max(base[0], base[1])});
+                  AssertThrow(it != edge_id.end(), ExcInternalError());
+                  face->set_boundary_id(it->second);
+                }
+            }
+    }
+
+
+
+    template <int dim>
+    void
+    colorize_bounding_box(Triangulation<dim> &triangulation)
+    {
+      const auto   box  = GridTools::compute_bounding_box(triangulation);
+      const auto   lo   = box.get_boundary_points().first;
+      const auto   hi   = box.get_boundary_points().second;
+      const double size = lo.distance(hi);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto c = cell->face(f)->center();
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  if (std::abs(c[d] - lo[d]) < 1e-10 * size)
+                    cell->face(f)->set_boundary_id(2 * d);
+                  else if (std::abs(c[d] - hi[d]) < 1e-10 * size)
+                    cell->face(f)->set_boundary_id(2 * d + 1);
+                }
+            }
+    }
+
+    template void
+    make_box<2>(const Point<2> &,
+                const Point<2> &,
+                const std::vector<unsigned int> &,
+                Triangulation<2> &);
+    template void
+    make_box<3>(const Point<3> &,
+                const Point<3> &,
+                const std::vector<unsigned int> &,
+                Triangulation<3> &);
+    template void
+    read_gmsh<2>(const std::string &, Triangulation<2> &);
+    template void
+    read_gmsh<3>(const std::string &, Triangulation<3> &);
+    template void
+    colorize_bounding_box<2>(Triangulation<2> &);
+    template void
+    colorize_bounding_box<3>(Triangulation<3> &);
+  } // namespace MeshGeneration
+} // namespace fsgmpm

@@ -1,0 +1,90 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/monitor_file.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  MonitorFile::MonitorFile(const std::string              &file_name,
+                           const std::vector<std::string> &columns)
+    : file(std::fopen(file_name.c_str(), "w"))
+    , n_columns(columns.size())
+  {
+    AssertThrow(file != nullptr,
+                dealii::ExcMessage("Cannot open <" + file_name +
+                                   "> for writing."));
+    std::string header;
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      header += (i ? "," : "") + columns[i];
+    header += "\n";
+    std::fputs(header.c_str(), file);
+    std::fflush(file);
+  }
+
+  MonitorFile::~MonitorFile()
+  {
+    if (file)
+      std::fclose(file);
+  }
+
+  void
+  MonitorFile::write_row(const std::vector<double> &values)
+  {
+    Assert(values.size() == n_columns, dealii::ExcInternalError());
+    std::string row;
+    char        buffer[40];
+    for (unsigned int i = 0; i < values.size(); ++i)
+      {
+        std::snprintf(buffer, sizeof(buffer), "%.17g", values[i]);
+        if (i)
+          row += ',';
+        row += buffer;
+      }
+    row += '\n';
+    std::fwrite(row.data(), 1, row.size(), file);
+    std::fflush(file);
+  }
+
+  std::string
+  json_string(const std::string &s)
+  {
+    std::string out = "\"";
+    for (const char c : s)
+      {
+        if (c == '"' || c == '\\')
+          out += '\\';
+        if (c == '\n')
+          {
+            out += "\\n";
+            continue;
+          }
+        out += c;
+      }
+    return out + "\"";
+  }
+
+  std::string
+  json_number(const double x)
+  {
+    if (!std::isfinite(x))
+      return "null";
+    char buffer[40];
+    std::snprintf(buffer, sizeof(buffer), "%.17g", x);
+    return buffer;
+  }
+
+  void
+  write_json(const std::string                                      &file_name,
+             const std::vector<std::pair<std::string, std::string>> &entries)
+  {
+    write_file_atomically(file_name, [&](std::ostream &out) {
+      out << "{\n";
+      for (unsigned int i = 0; i < entries.size(); ++i)
+        out << "  " << json_string(entries[i].first) << ": "
+            << entries[i].second << (i + 1 < entries.size() ? ",\n" : "\n");
+      out << "}\n";
+    });
+  }
+} // namespace fsgmpm

@@ -1,0 +1,113 @@
+#include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/particle_output.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace fsgmpm
+{
+  namespace
+  {
+    // Field layout: velocity (dim), stress xx yy zz xy [xz yz], pressure,
+    // mass, volume, material id, body id.
+    constexpr unsigned int n_stress_components(const int dim)
+    {
+      return dim == 2 ? 4 : 6;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::build_patches(const ParticleStore<dim> &particles)
+  {
+    const unsigned int n_fields = dim + n_stress_components(dim) + 5;
+    patches.resize(particles.size());
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      {
+        auto &patch       = patches[p];
+        patch.vertices[0] = particles.position[p];
+        patch.patch_index = p;
+        patch.data.reinit(n_fields, 1);
+        unsigned int f = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          patch.data(f++, 0) = particles.velocity[p][d];
+        const auto &s      = particles.stress[p];
+        patch.data(f++, 0) = s[0][0];
+        patch.data(f++, 0) = s[1][1];
+        patch.data(f++, 0) = s[2][2];
+        patch.data(f++, 0) = s[0][1];
+        if (dim == 3)
+          {
+            patch.data(f++, 0) = s[0][2];
+            patch.data(f++, 0) = s[1][2];
+          }
+        patch.data(f++, 0) = -trace(s) / 3.;
+        patch.data(f++, 0) = particles.mass[p];
+        patch.data(f++, 0) = particles.volume[p];
+        patch.data(f++, 0) = particles.material_id[p];
+        patch.data(f++, 0) = particles.body_id[p];
+      }
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  ParticleOutput<dim>::get_dataset_names() const
+  {
+    std::vector<std::string> names(dim, "velocity");
+    for (const auto &n : {"stress_xx", "stress_yy", "stress_zz", "stress_xy"})
+      names.emplace_back(n);
+    if (dim == 3)
+      {
+        names.emplace_back("stress_xz");
+        names.emplace_back("stress_yz");
+      }
+    for (const auto &n :
+         {"pressure", "mass", "volume", "material_id", "body_id"})
+      names.emplace_back(n);
+    return names;
+  }
+
+  template <int dim>
+  std::vector<
+    std::tuple<unsigned int,
+               unsigned int,
+               std::string,
+               DataComponentInterpretation::DataComponentInterpretation>>
+  ParticleOutput<dim>::get_nonscalar_data_ranges() const
+  {
+    return {std::make_tuple(0u,
+                            dim - 1u,
+                            std::string("velocity"),
+                            DataComponentInterpretation::component_is_part_of_vector)};
+  }
+
+
+
+  PvdSeries::PvdSeries(const std::string &directory,
+                       const std::string &base_name)
+    : directory(directory)
+    , base_name(base_name)
+  {}
+
+  std::string
+  PvdSeries::next_file(const double time)
+  {
+    std::ostringstream name;
+    name << base_name << "_" << std::setw(5) << std::setfill('0')
+         << records.size() << ".vtu";
+    records.emplace_back(time, name.str());
+    return name.str();
+  }
+
+  void
+  PvdSeries::write_pvd() const
+  {
+    write_file_atomically(directory + "/" + base_name + ".pvd",
+                          [&](std::ostream &out) {
+                            DataOutBase::write_pvd_record(out, records);
+                          });
+  }
+
+  template class ParticleOutput<2>;
+  template class ParticleOutput<3>;
+} // namespace fsgmpm

@@ -1,0 +1,174 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/particles/body_filler.h>
+
+namespace fsgmpm
+{
+  namespace
+  {
+    template <int dim>
+    using Simplex = std::array<std::array<double, dim + 1>, dim + 1>;
+
+    template <int dim>
+    std::array<double, dim + 1>
+    midpoint(const std::array<double, dim + 1> &a,
+             const std::array<double, dim + 1> &b)
+    {
+      std::array<double, dim + 1> m;
+      for (unsigned int k = 0; k < dim + 1; ++k)
+        m[k] = 0.5 * (a[k] + b[k]);
+      return m;
+    }
+
+    // Regular refinement of a triangle into 4 and of a tetrahedron into 8
+    // children of equal volume (Bey's rule).
+    template <int dim>
+    std::vector<Simplex<dim>>
+    refine(const Simplex<dim> &s)
+    {
+      if constexpr (dim == 2)
+        {
+          const auto m01 = midpoint<2>(s[0], s[1]), m02 = midpoint<2>(s[0], s[2]),
+                     m12 = midpoint<2>(s[1], s[2]);
+          return {{{s[0], m01, m02}},
+                  {{m01, s[1], m12}},
+                  {{m02, m12, s[2]}},
+                  {{m01, m12, m02}}};
+        }
+      else
+        {
+          const auto x01 = midpoint<3>(s[0], s[1]), x02 = midpoint<3>(s[0], s[2]),
+                     x03 = midpoint<3>(s[0], s[3]), x12 = midpoint<3>(s[1], s[2]),
+                     x13 = midpoint<3>(s[1], s[3]), x23 = midpoint<3>(s[2], s[3]);
+          return {{{s[0], x01, x02, x03}},
+                  {{x01, s[1], x12, x13}},
+                  {{x02, x12, s[2], x23}},
+                  {{x03, x13, x23, s[3]}},
+                  {{x01, x02, x03, x13}},
+                  {{x01, x02, x12, x13}},
+                  {{x02, x03, x13, x23}},
+                  {{x02, x12, x13, x23}}};
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<std::array<double, dim + 1>>
+  reference_particle_points(const unsigned int particles_per_cell)
+  {
+    std::vector<Simplex<dim>> simplices(1);
+    for (unsigned int k = 0; k < dim + 1; ++k)
+      for (unsigned int j = 0; j < dim + 1; ++j)
+        simplices[0][k][j] = (k == j) ? 1. : 0.;
+    while (simplices.size() < particles_per_cell)
+      {
+        std::vector<Simplex<dim>> next;
+        for (const auto &s : simplices)
+          for (const auto &child : refine<dim>(s))
+            next.push_back(child);
+        simplices.swap(next);
+      }
+    AssertThrow(simplices.size() == particles_per_cell,
+                ExcMessage("Particles per cell must be a power of " +
+                           std::to_string(1u << dim) + " (1, " +
+                           std::to_string(1u << dim) + ", " +
+                           std::to_string(1u << (2 * dim)) + ", ...) in " +
+                           std::to_string(dim) + "D; got " +
+                           std::to_string(particles_per_cell) + "."));
+    std::vector<std::array<double, dim + 1>> points;
+    for (const auto &s : simplices)
+      {
+        std::array<double, dim + 1> c{};
+        for (unsigned int v = 0; v < dim + 1; ++v)
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            c[k] += s[v][k] / (dim + 1);
+        points.push_back(c);
+      }
+    return points;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  fill_body(const BackgroundGrid<dim> &grid,
+            const BodyShape<dim>      &shape,
+            const unsigned int         particles_per_cell,
+            const double               density,
+            const Tensor<1, dim>      &initial_velocity,
+            const std::uint16_t        material_id,
+            const std::uint16_t        body_id,
+            ParticleStore<dim>        &particles)
+  {
+    for (const Point<dim> &p : shape.outline_points())
+      {
+        // Allow round-off on the mesh boundary.
+        const double tol = 1e-9;
+        AssertThrow(grid.find_cell_brute_force(p, tol) !=
+                      BackgroundGrid<dim>::invalid,
+                    ExcMessage("Body " + std::to_string(body_id) + " (" +
+                               shape.description() +
+                               ") reaches outside the background mesh, e.g. "
+                               "at the point (" +
+                               [&] {
+                                 std::ostringstream s;
+                                 s << p;
+                                 return s.str();
+                               }() +
+                               "). Move the body or enlarge the grid."));
+      }
+
+    const auto   ref   = reference_particle_points<dim>(particles_per_cell);
+    unsigned int added = 0;
+    for (unsigned int c = 0; c < grid.n_cells(); ++c)
+      {
+        const double v = grid.cell_volume[c] / ref.size();
+        for (const auto &lambda : ref)
+          {
+            const Point<dim> x = grid.position(c, lambda);
+            if (!shape.inside(x))
+              continue;
+            particles.add(x,
+                          c,
+                          density * v,
+                          v,
+                          initial_velocity,
+                          SymmetricTensor<2, 3>(),
+                          material_id,
+                          body_id);
+            ++added;
+          }
+      }
+    AssertThrow(added > 0,
+                ExcMessage("Body " + std::to_string(body_id) + " (" +
+                           shape.description() +
+                           ") contains no material point: it is smaller "
+                           "than the grid resolution or outside the mesh."));
+    return added;
+  }
+
+  template std::vector<std::array<double, 3>>
+  reference_particle_points<2>(const unsigned int);
+  template std::vector<std::array<double, 4>>
+  reference_particle_points<3>(const unsigned int);
+  template unsigned int
+  fill_body<2>(const BackgroundGrid<2> &,
+               const BodyShape<2> &,
+               const unsigned int,
+               const double,
+               const Tensor<1, 2> &,
+               const std::uint16_t,
+               const std::uint16_t,
+               ParticleStore<2> &);
+  template unsigned int
+  fill_body<3>(const BackgroundGrid<3> &,
+               const BodyShape<3> &,
+               const unsigned int,
+               const double,
+               const Tensor<1, 3> &,
+               const std::uint16_t,
+               const std::uint16_t,
+               ParticleStore<3> &);
+} // namespace fsgmpm

@@ -1,0 +1,178 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/particles/body_shape.h>
+
+#include <sstream>
+
+namespace fsgmpm
+{
+  template <int dim>
+  BoxShape<dim>::BoxShape(const Point<dim> &lower, const Point<dim> &upper)
+    : lower(lower)
+    , upper(upper)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      AssertThrow(upper[d] > lower[d],
+                  ExcMessage("Box upper corner must exceed the lower corner "
+                             "in every direction."));
+  }
+
+  template <int dim>
+  bool
+  BoxShape<dim>::inside(const Point<dim> &x) const
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      if (x[d] < lower[d] || x[d] > upper[d])
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  BoxShape<dim>::outline_points() const
+  {
+    std::vector<Point<dim>> corners;
+    for (unsigned int i = 0; i < (1u << dim); ++i)
+      {
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = (i & (1u << d)) ? upper[d] : lower[d];
+        corners.push_back(p);
+      }
+    return corners;
+  }
+
+  template <int dim>
+  std::string
+  BoxShape<dim>::description() const
+  {
+    std::ostringstream s;
+    s << "box [" << lower << "] - [" << upper << "]";
+    return s.str();
+  }
+
+
+
+  template <int dim>
+  EllipseShape<dim>::EllipseShape(const Point<dim>     &center,
+                                  const Tensor<1, dim> &semi_axes)
+    : center(center)
+    , semi_axes(semi_axes)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      AssertThrow(semi_axes[d] > 0,
+                  ExcMessage("Ellipse semi-axes must be positive."));
+  }
+
+  template <int dim>
+  bool
+  EllipseShape<dim>::inside(const Point<dim> &x) const
+  {
+    double r = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      r += (x[d] - center[d]) * (x[d] - center[d]) /
+           (semi_axes[d] * semi_axes[d]);
+    return r <= 1.;
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  EllipseShape<dim>::outline_points() const
+  {
+    std::vector<Point<dim>> pts;
+    for (unsigned int d = 0; d < dim; ++d)
+      for (const double s : {-1., 1.})
+        {
+          Point<dim> p = center;
+          p[d] += s * semi_axes[d];
+          pts.push_back(p);
+        }
+    return pts;
+  }
+
+  template <int dim>
+  std::string
+  EllipseShape<dim>::description() const
+  {
+    std::ostringstream s;
+    s << "ellipse centre (" << center << ") semi-axes (" << semi_axes << ")";
+    return s.str();
+  }
+
+
+
+  namespace
+  {
+    double
+    cross(const Point<2> &o, const Point<2> &a, const Point<2> &b)
+    {
+      return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    }
+
+    bool
+    segments_intersect(const Point<2> &a,
+                       const Point<2> &b,
+                       const Point<2> &c,
+                       const Point<2> &d)
+    {
+      const double d1 = cross(c, d, a), d2 = cross(c, d, b);
+      const double d3 = cross(a, b, c), d4 = cross(a, b, d);
+      return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+             ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+    }
+  } // namespace
+
+  PolygonShape::PolygonShape(const std::vector<Point<2>> &v)
+    : vertices(v)
+  {
+    const unsigned int n = vertices.size();
+    AssertThrow(n >= 3,
+                ExcMessage("A polygon needs at least three vertices."));
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        {
+          // Adjacent edges share a vertex and are not tested.
+          if (j == i + 1 || (i == 0 && j == n - 1))
+            continue;
+          AssertThrow(!segments_intersect(vertices[i],
+                                          vertices[(i + 1) % n],
+                                          vertices[j],
+                                          vertices[(j + 1) % n]),
+                      ExcMessage("The polygon intersects itself (edges " +
+                                 std::to_string(i) + " and " +
+                                 std::to_string(j) + ")."));
+        }
+  }
+
+  bool
+  PolygonShape::inside(const Point<2> &x) const
+  {
+    bool               in = false;
+    const unsigned int n  = vertices.size();
+    for (unsigned int i = 0, j = n - 1; i < n; j = i++)
+      {
+        const Point<2> &a = vertices[i], &b = vertices[j];
+        if ((a[1] > x[1]) != (b[1] > x[1]) &&
+            x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0])
+          in = !in;
+      }
+    return in;
+  }
+
+  std::vector<Point<2>>
+  PolygonShape::outline_points() const
+  {
+    return vertices;
+  }
+
+  std::string
+  PolygonShape::description() const
+  {
+    return "polygon with " + std::to_string(vertices.size()) + " vertices";
+  }
+
+  template class BoxShape<2>;
+  template class BoxShape<3>;
+  template class EllipseShape<2>;
+  template class EllipseShape<3>;
+} // namespace fsgmpm

@@ -1,0 +1,135 @@
+#include <fsgmpm/particles/particle_store.h>
+
+#include <cstring>
+
+namespace fsgmpm
+{
+  template <int dim>
+  void
+  ParticleStore<dim>::add(const Point<dim>            &x,
+                          const unsigned int           c,
+                          const double                 m,
+                          const double                 v0,
+                          const Tensor<1, dim>        &vel,
+                          const SymmetricTensor<2, 3> &sigma,
+                          const std::uint16_t          material,
+                          const std::uint16_t          body)
+  {
+    position.push_back(x);
+    cell.push_back(c);
+    mass.push_back(m);
+    volume.push_back(v0);
+    initial_volume.push_back(v0);
+    velocity.push_back(vel);
+    stress.push_back(sigma);
+    material_id.push_back(material);
+    body_id.push_back(body);
+  }
+
+
+
+  template <int dim>
+  template <typename T>
+  void
+  ParticleStore<dim>::permute(std::vector<T>                  &v,
+                              const std::vector<unsigned int> &order)
+  {
+    value_scratch.resize(sizeof(T) * v.size());
+    T *tmp = reinterpret_cast<T *>(value_scratch.data());
+    for (unsigned int i = 0; i < order.size(); ++i)
+      tmp[i] = v[order[i]];
+    std::memcpy(static_cast<void *>(v.data()), tmp, sizeof(T) * v.size());
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::sort_by_cell(const unsigned int n_cells)
+  {
+    const unsigned int n = size();
+    cell_start.assign(n_cells + 1, 0);
+    for (unsigned int p = 0; p < n; ++p)
+      ++cell_start[cell[p] + 1];
+    bool sorted = true;
+    for (unsigned int p = 1; p < n && sorted; ++p)
+      sorted = cell[p - 1] <= cell[p];
+    for (unsigned int c = 0; c < n_cells; ++c)
+      cell_start[c + 1] += cell_start[c];
+
+    occupied_cells.clear();
+    for (unsigned int c = 0; c < n_cells; ++c)
+      if (cell_start[c + 1] > cell_start[c])
+        occupied_cells.push_back(c);
+
+    if (sorted)
+      return;
+
+    order_scratch.resize(n);
+    std::vector<unsigned int> next(cell_start.begin(), cell_start.end() - 1);
+    for (unsigned int p = 0; p < n; ++p)
+      order_scratch[next[cell[p]]++] = p;
+
+    permute(position, order_scratch);
+    permute(velocity, order_scratch);
+    permute(stress, order_scratch);
+    permute(mass, order_scratch);
+    permute(volume, order_scratch);
+    permute(initial_volume, order_scratch);
+    permute(cell, order_scratch);
+    permute(material_id, order_scratch);
+    permute(body_id, order_scratch);
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::remove_flagged(const std::vector<std::uint8_t> &flag)
+  {
+    std::vector<unsigned int> keep;
+    keep.reserve(size());
+    for (unsigned int p = 0; p < size(); ++p)
+      if (flag[p] == 0)
+        keep.push_back(p);
+    if (keep.size() == size())
+      return;
+    auto shrink = [&](auto &v) {
+      for (unsigned int i = 0; i < keep.size(); ++i)
+        v[i] = v[keep[i]];
+      v.resize(keep.size());
+    };
+    shrink(position);
+    shrink(velocity);
+    shrink(stress);
+    shrink(mass);
+    shrink(volume);
+    shrink(initial_volume);
+    shrink(cell);
+    shrink(material_id);
+    shrink(body_id);
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleStore<dim>::bytes_per_particle() const
+  {
+    if (size() == 0)
+      return 0;
+    const double bytes =
+      position.capacity() * sizeof(Point<dim>) +
+      velocity.capacity() * sizeof(Tensor<1, dim>) +
+      stress.capacity() * sizeof(SymmetricTensor<2, 3>) +
+      (mass.capacity() + volume.capacity() + initial_volume.capacity()) *
+        sizeof(double) +
+      cell.capacity() * sizeof(unsigned int) +
+      (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t) +
+      order_scratch.capacity() * sizeof(unsigned int) + value_scratch.capacity();
+    return bytes / size();
+  }
+
+  template class ParticleStore<2>;
+  template class ParticleStore<3>;
+} // namespace fsgmpm

@@ -1,0 +1,170 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <fsgmpm/materials/linear_elastic.h>
+#include <fsgmpm/scene/body.h>
+#include <fsgmpm/scene/parameters.h>
+
+namespace fsgmpm
+{
+  template <int dim>
+  void
+  BodyDescription<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Bodies");
+    prm.declare_entry("Number of bodies",
+                      "1",
+                      Patterns::Integer(1, max_n_bodies),
+                      "How many of the subsections Body 0, Body 1, ... are "
+                      "used.");
+    for (unsigned int b = 0; b < max_n_bodies; ++b)
+      {
+        prm.enter_subsection("Body " + std::to_string(b));
+        prm.declare_entry("Shape",
+                          "box",
+                          Patterns::Selection("box|ellipse|polygon"),
+                          "Region the body fills initially: box, ellipse "
+                          "(ellipsoid in 3D) or polygon (2D only).");
+        prm.declare_entry("Box lower corner",
+                          "0.3, 0.2",
+                          Patterns::List(Patterns::Double()),
+                          "Shape = box: lower corner (dim coordinates, m).");
+        prm.declare_entry("Box upper corner",
+                          "0.7, 0.4",
+                          Patterns::List(Patterns::Double()),
+                          "Shape = box: upper corner (dim coordinates, m).");
+        prm.declare_entry("Ellipse center",
+                          "0.5, 0.5",
+                          Patterns::List(Patterns::Double()),
+                          "Shape = ellipse: centre (m).");
+        prm.declare_entry("Ellipse semi-axes",
+                          "0.1, 0.1",
+                          Patterns::List(Patterns::Double(0)),
+                          "Shape = ellipse: semi-axes along x, y (, z) (m).");
+        prm.declare_entry("Polygon vertices",
+                          "",
+                          Patterns::Anything(),
+                          "Shape = polygon: closed simple polygon as "
+                          "'x0, y0; x1, y1; ...' (m), 2D only.");
+        prm.declare_entry("Particles per cell",
+                          "4",
+                          Patterns::Integer(1, 4096),
+                          "Material points per background cell: (2^dim)^L, "
+                          "i.e. 1, 4, 16, 64 in 2D and 1, 8, 64 in 3D.");
+        prm.declare_entry("Density",
+                          "1000",
+                          Patterns::Double(0),
+                          "Mass density (kg/m^3, > 0).");
+        prm.declare_entry("Initial velocity",
+                          "0, 0",
+                          Patterns::List(Patterns::Double()),
+                          "Initial velocity (m/s); in 3D a two-entry value "
+                          "means z = 0.");
+        prm.declare_entry("Material model",
+                          "linear elastic",
+                          Patterns::Selection("linear elastic"),
+                          "Constitutive model of the body.");
+        prm.declare_entry("Initial stress",
+                          "none",
+                          Patterns::Selection("none|geostatic"),
+                          "none: stress free; geostatic: sigma_yy = -rho g "
+                          "(y_top - y) from the body's top, sigma_xx = sigma_zz "
+                          "= K0 sigma_yy (uses Simulation/Gravity).");
+        prm.declare_entry("K0",
+                          "0.5",
+                          Patterns::Double(0),
+                          "Lateral stress ratio for Initial stress = "
+                          "geostatic.");
+        LinearElastic::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    template <int dim>
+    Point<dim>
+    parse_point(const std::string &text, const std::string &path)
+    {
+      return Point<dim>(parse_vector<dim>(text, path));
+    }
+
+    std::vector<Point<2>>
+    parse_polygon(const std::string &text, const std::string &path)
+    {
+      std::vector<Point<2>> vertices;
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+        vertices.emplace_back(parse_vector<2>(item, path));
+      AssertThrow(vertices.size() >= 3,
+                  ExcMessage(path + " needs at least three vertices "
+                                    "'x0, y0; x1, y1; x2, y2'."));
+      return vertices;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<BodyDescription<dim>>
+  BodyDescription<dim>::parse_bodies(ParameterHandler &prm)
+  {
+    std::vector<BodyDescription<dim>> bodies;
+    prm.enter_subsection("Bodies");
+    const unsigned int n = prm.get_integer("Number of bodies");
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        BodyDescription<dim> body;
+        body.path = "Bodies/Body " + std::to_string(b);
+        prm.enter_subsection("Body " + std::to_string(b));
+        const std::string shape = prm.get("Shape");
+        if (shape == "box")
+          body.shape = std::make_unique<BoxShape<dim>>(
+            parse_point<dim>(prm.get("Box lower corner"),
+                             body.path + "/Box lower corner"),
+            parse_point<dim>(prm.get("Box upper corner"),
+                             body.path + "/Box upper corner"));
+        else if (shape == "ellipse")
+          body.shape = std::make_unique<EllipseShape<dim>>(
+            parse_point<dim>(prm.get("Ellipse center"),
+                             body.path + "/Ellipse center"),
+            parse_vector<dim>(prm.get("Ellipse semi-axes"),
+                              body.path + "/Ellipse semi-axes"));
+        else
+          {
+            if constexpr (dim == 2)
+              body.shape = std::make_unique<PolygonShape>(
+                parse_polygon(prm.get("Polygon vertices"),
+                              body.path + "/Polygon vertices"));
+            else
+              AssertThrow(false,
+                          ExcMessage(body.path +
+                                     "/Shape = polygon is only available "
+                                     "in 2D."));
+          }
+        body.particles_per_cell = prm.get_integer("Particles per cell");
+        body.density            = prm.get_double("Density");
+        AssertThrow(body.density > 0,
+                    ExcMessage(body.path + "/Density must be positive; got " +
+                               prm.get("Density") + "."));
+        body.initial_velocity =
+          parse_vector<dim>(prm.get("Initial velocity"),
+                            body.path + "/Initial velocity");
+        body.geostatic = (prm.get("Initial stress") == "geostatic");
+        body.k0        = prm.get_double("K0");
+        const std::string model = prm.get("Material model");
+        if (model == "linear elastic")
+          body.material =
+            LinearElastic::create(prm, body.density, body.path);
+        prm.leave_subsection();
+        bodies.push_back(std::move(body));
+      }
+    prm.leave_subsection();
+    return bodies;
+  }
+
+  template struct BodyDescription<2>;
+  template struct BodyDescription<3>;
+} // namespace fsgmpm

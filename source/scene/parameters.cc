@@ -1,0 +1,317 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <fsgmpm/scene/body.h>
+#include <fsgmpm/scene/parameters.h>
+
+namespace fsgmpm
+{
+  template <int dim>
+  Tensor<1, dim>
+  parse_vector(const std::string &text, const std::string &path)
+  {
+    const auto     items = Utilities::split_string_list(text, ',');
+    Tensor<1, dim> v;
+    // A two-entry value is accepted in 3D with z = 0: y is vertical in 2D
+    // and 3D alike, so 2D vectors such as gravity carry over unchanged.
+    AssertThrow(items.size() == dim || (dim == 3 && items.size() == 2),
+                ExcMessage(path + " must have " + std::to_string(dim) +
+                           " comma-separated numbers; got <" + text + ">."));
+    for (unsigned int d = 0; d < items.size(); ++d)
+      {
+        try
+          {
+            v[d] = Utilities::string_to_double(items[d]);
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage(path + ": <" + items[d] +
+                                   "> is not a number."));
+          }
+        AssertThrow(std::isfinite(v[d]),
+                    ExcMessage(path + ": <" + items[d] +
+                               "> is not a finite number."));
+      }
+    return v;
+  }
+
+
+
+  unsigned int
+  get_dimension(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Simulation");
+    const unsigned int d = prm.get_integer("Dimension");
+    prm.leave_subsection();
+    return d;
+  }
+
+
+
+  template <int dim>
+  void
+  Parameters<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Simulation");
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "2 (plane strain, triangles) or 3 (tetrahedra).");
+      prm.declare_entry("End time",
+                        "0.6",
+                        Patterns::Double(0),
+                        "Simulated time at which the run stops (s, > 0).");
+      prm.declare_entry("Maximum number of steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Stop after this many steps (0: no limit).");
+      prm.declare_entry("Courant number",
+                        "0.5",
+                        Patterns::Double(0, 1),
+                        "C in dt = C min h/(c + |v|), 0 < C <= 1.");
+      prm.declare_entry("Fixed time step",
+                        "0",
+                        Patterns::Double(0),
+                        "If > 0, use this time step (s) instead of the "
+                        "automatic one; the run stops as unstable if it "
+                        "exceeds the stability limit by more than 1/C.");
+      prm.declare_entry("Update scheme",
+                        "MUSL",
+                        Patterns::Selection("MUSL|USL"),
+                        "MUSL: stress and positions from the remapped nodal "
+                        "velocities of Eq. (20) (paper); USL: from the "
+                        "grid-updated velocities.");
+      prm.declare_entry("Gravity",
+                        "0, -9.81",
+                        Patterns::List(Patterns::Double()),
+                        "Gravitational acceleration (m/s^2); y is vertical. "
+                        "In 3D a two-entry value means z = 0.");
+      prm.declare_entry("Gravity ramp time",
+                        "0",
+                        Patterns::Double(0),
+                        "Gravity grows linearly from 0 over this time (s).");
+      prm.declare_entry("Termination",
+                        "end_time",
+                        Patterns::Selection("end_time|dr_converged"),
+                        "end_time: run to End time; dr_converged: stop "
+                        "earlier when both Eq. (30) ratios stay below their "
+                        "tolerances for the convergence window.");
+      prm.declare_entry("Number of threads",
+                        "0",
+                        Patterns::Integer(0),
+                        "Threads for the particle and grid loops (0: all "
+                        "cores or DEAL_II_NUM_THREADS).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Damping");
+    {
+      prm.declare_entry("Local damping coefficient",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "alpha of local non-viscous damping F = -alpha "
+                        "|F_unbalanced| sign(v), 0 <= alpha < 1.");
+      prm.declare_entry("Kinetic damping",
+                        "false",
+                        Patterns::Bool(),
+                        "Zero all velocities at each peak of the kinetic "
+                        "energy.");
+      prm.declare_entry("Energy tolerance",
+                        "0.05",
+                        Patterns::Double(0),
+                        "E_v of Eq. (30): kinetic energy / external work.");
+      prm.declare_entry("Force tolerance",
+                        "0.05",
+                        Patterns::Double(0),
+                        "E_f of Eq. (30): |F_ext - F_int| / |F_ext| over "
+                        "the unconstrained nodal components.");
+      prm.declare_entry("Convergence window",
+                        "1000",
+                        Patterns::Integer(1),
+                        "Consecutive steps both Eq. (30) ratios must stay "
+                        "below their tolerances.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Stability");
+    {
+      prm.declare_entry("Kinetic energy growth factor",
+                        "10",
+                        Patterns::Double(1),
+                        "Stop as unstable if the kinetic energy grows by "
+                        "more than this factor over the growth window while "
+                        "the external work does not account for it.");
+      prm.declare_entry("Growth window",
+                        "100",
+                        Patterns::Integer(1),
+                        "Steps over which the kinetic energy growth is "
+                        "measured.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Grid");
+    {
+      prm.declare_entry("Type",
+                        "box",
+                        Patterns::Selection("box|gmsh"),
+                        "box: a box split into simplices; gmsh: read Mesh "
+                        "file.");
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double()),
+                        "Type = box: lower corner (m).");
+      prm.declare_entry("Upper corner",
+                        "1, 0.6",
+                        Patterns::List(Patterns::Double()),
+                        "Type = box: upper corner (m).");
+      prm.declare_entry("Subdivisions",
+                        "40, 24",
+                        Patterns::List(Patterns::Integer(1)),
+                        "Type = box: number of squares/cubes per direction, "
+                        "each split into 2 triangles (2D) or 5-6 tets (3D).");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "Type = gmsh: path of a .msh file of triangles or "
+                        "tetrahedra (relative to the working directory).");
+      prm.declare_entry("Boundary conditions",
+                        "0: roller, 1: roller, 2: friction 0.3, 3: free",
+                        Patterns::Anything(),
+                        "Walls by boundary id: 'id: type, ...' with type "
+                        "free, fixed, roller (slip) or 'friction <mu>' "
+                        "(unilateral Coulomb contact). Box ids: 0/1 x-min/"
+                        "max, 2/3 y-min/max, 4/5 z-min/max. Ids not listed "
+                        "are free.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Output directory (created; relative to the working "
+                        "directory).");
+      prm.declare_entry("Output interval",
+                        "0.02",
+                        Patterns::Double(0),
+                        "Write VTU files every this much simulated time "
+                        "(s; 0: use Output every n steps).");
+      prm.declare_entry("Output every n steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write VTU files every n steps (0: never, unless "
+                        "Output interval > 0).");
+      prm.declare_entry("Write particles",
+                        "true",
+                        Patterns::Bool(),
+                        "Write the material points (VTU/PVD).");
+      prm.declare_entry("Write grid",
+                        "false",
+                        Patterns::Bool(),
+                        "Write the background grid with nodal fields.");
+      prm.declare_entry("Monitor every n steps",
+                        "1",
+                        Patterns::Integer(1),
+                        "Append a row to monitors.csv every n steps.");
+      prm.declare_entry("Quiet",
+                        "false",
+                        Patterns::Bool(),
+                        "Suppress the progress line.");
+    }
+    prm.leave_subsection();
+
+    BodyDescription<dim>::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Parameters<dim>::Parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Simulation");
+    end_time  = prm.get_double("End time");
+    max_steps = prm.get_integer("Maximum number of steps");
+    courant   = prm.get_double("Courant number");
+    fixed_dt  = prm.get_double("Fixed time step");
+    use_musl  = (prm.get("Update scheme") == "MUSL");
+    gravity = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
+    gravity_ramp_time   = prm.get_double("Gravity ramp time");
+    stop_when_converged = (prm.get("Termination") == "dr_converged");
+    n_threads           = prm.get_integer("Number of threads");
+    prm.leave_subsection();
+    AssertThrow(end_time > 0,
+                ExcMessage("Simulation/End time must be positive."));
+    AssertThrow(courant > 0 && courant <= 1,
+                ExcMessage("Simulation/Courant number must lie in (0, 1]; "
+                           "got " +
+                           std::to_string(courant) + "."));
+
+    prm.enter_subsection("Damping");
+    local_damping      = prm.get_double("Local damping coefficient");
+    kinetic_damping    = prm.get_bool("Kinetic damping");
+    energy_tolerance   = prm.get_double("Energy tolerance");
+    force_tolerance    = prm.get_double("Force tolerance");
+    convergence_window = prm.get_integer("Convergence window");
+    prm.leave_subsection();
+    AssertThrow(local_damping >= 0 && local_damping < 1,
+                ExcMessage("Damping/Local damping coefficient must lie in "
+                           "[0, 1); got " +
+                           std::to_string(local_damping) + "."));
+
+    prm.enter_subsection("Stability");
+    ke_growth_factor = prm.get_double("Kinetic energy growth factor");
+    ke_growth_window = prm.get_integer("Growth window");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Grid");
+    grid_type = prm.get("Type");
+    if (grid_type == "box")
+      {
+        lower_corner = Point<dim>(
+          parse_vector<dim>(prm.get("Lower corner"), "Grid/Lower corner"));
+        upper_corner = Point<dim>(
+          parse_vector<dim>(prm.get("Upper corner"), "Grid/Upper corner"));
+        for (unsigned int d = 0; d < dim; ++d)
+          AssertThrow(upper_corner[d] > lower_corner[d],
+                      ExcMessage("Grid/Upper corner must exceed Grid/Lower "
+                                 "corner in every coordinate."));
+        const auto items =
+          Utilities::split_string_list(prm.get("Subdivisions"), ',');
+        AssertThrow(items.size() == dim,
+                    ExcMessage("Grid/Subdivisions must have " +
+                               std::to_string(dim) + " entries; got <" +
+                               prm.get("Subdivisions") + ">."));
+        for (const auto &s : items)
+          subdivisions.push_back(Utilities::string_to_int(s));
+      }
+    mesh_file = prm.get("Mesh file");
+    AssertThrow(grid_type != "gmsh" || !mesh_file.empty(),
+                ExcMessage("Grid/Mesh file must be given when Grid/Type = "
+                           "gmsh."));
+    walls = parse_wall_conditions(prm.get("Boundary conditions"),
+                                  "Grid/Boundary conditions");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_directory    = prm.get("Directory");
+    output_interval     = prm.get_double("Output interval");
+    output_every_steps  = prm.get_integer("Output every n steps");
+    write_particles     = prm.get_bool("Write particles");
+    write_grid          = prm.get_bool("Write grid");
+    monitor_every_steps = prm.get_integer("Monitor every n steps");
+    quiet               = prm.get_bool("Quiet");
+    prm.leave_subsection();
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Output/Directory must not be empty."));
+  }
+
+  template struct Parameters<2>;
+  template struct Parameters<3>;
+  template Tensor<1, 2>
+  parse_vector<2>(const std::string &, const std::string &);
+  template Tensor<1, 3>
+  parse_vector<3>(const std::string &, const std::string &);
+} // namespace fsgmpm

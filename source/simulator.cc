@@ -1,0 +1,574 @@
+#include <deal.II/base/multithread_info.h>
+
+#include <fsgmpm/grid/mesh_generation.h>
+#include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/grid_output.h>
+#include <fsgmpm/io/monitor_file.h>
+#include <fsgmpm/particles/body_filler.h>
+#include <fsgmpm/simulator.h>
+#include <fsgmpm/step/stages.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+namespace fsgmpm
+{
+  namespace
+  {
+    enum Stage : unsigned int
+    {
+      time_step_stage,
+      p2g_stage,
+      grid_update_stage,
+      g2p_stage,
+      remap_stage,
+      stress_update_stage,
+      position_stage,
+      relocate_stage,
+      monitor_stage,
+      output_stage,
+      n_stages
+    };
+
+    template <int dim>
+    std::string
+    to_string(const Point<dim> &p)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "(" << p << ")";
+      return s.str();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  const std::vector<std::string> &
+  Simulator<dim>::stage_names()
+  {
+    static const std::vector<std::string> names = {"time_step",
+                                                   "p2g",
+                                                   "grid_update",
+                                                   "g2p",
+                                                   "remap",
+                                                   "stress_update",
+                                                   "position_update",
+                                                   "relocate",
+                                                   "monitors",
+                                                   "output"};
+    return names;
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm)
+    : params(prm)
+    , stage_seconds(n_stages, 0.)
+  {
+    if (params.n_threads > 0)
+      MultithreadInfo::set_thread_limit(params.n_threads);
+
+    bodies = BodyDescription<dim>::parse_bodies(prm);
+
+    Triangulation<dim> triangulation;
+    if (params.grid_type == "box")
+      MeshGeneration::make_box(params.lower_corner,
+                               params.upper_corner,
+                               params.subdivisions,
+                               triangulation);
+    else
+      MeshGeneration::read_gmsh(params.mesh_file, triangulation);
+    grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
+
+    // Every boundary id named in the wall conditions must exist.
+    std::set<types::boundary_id> mesh_ids;
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      for (unsigned int k = 0; k < dim + 1; ++k)
+        if (grid->cell_neighbors[c][k] == BackgroundGrid<dim>::invalid)
+          mesh_ids.insert(grid->face_boundary_id[c][k]);
+    for (const auto &[id, wall] : params.walls)
+      AssertThrow(mesh_ids.count(id) == 1,
+                  ExcMessage("Grid/Boundary conditions names boundary id " +
+                             std::to_string(id) +
+                             ", but the mesh has no boundary face with that "
+                             "id."));
+
+    constraints =
+      std::make_unique<NodalConstraints<dim>>(*grid, params.walls);
+    nodes.resize(grid->n_nodes());
+    setup_bodies();
+
+    Stages::p2g(*grid, particles, nodes);
+    compute_monitors();
+    energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
+                               monitors.external_work}});
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::~Simulator() = default;
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_bodies()
+  {
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        BodyDescription<dim> &body  = bodies[b];
+        const unsigned int    first = particles.size();
+        fill_body(*grid,
+                  *body.shape,
+                  body.particles_per_cell,
+                  body.density,
+                  body.initial_velocity,
+                  b,
+                  b,
+                  particles);
+        if (body.geostatic)
+          {
+            // sigma_yy = rho g_y (y_top - y): compression below the top.
+            double y_top = -std::numeric_limits<double>::max();
+            for (const auto &p : body.shape->outline_points())
+              y_top = std::max(y_top, p[1]);
+            for (unsigned int p = first; p < particles.size(); ++p)
+              {
+                const double syy =
+                  body.density * params.gravity[1] *
+                  (y_top - particles.position[p][1]);
+                SymmetricTensor<2, 3> s;
+                s[0][0] = s[2][2] = body.k0 * syy;
+                s[1][1]           = syy;
+                particles.stress[p] = s;
+              }
+          }
+        materials.push_back(std::move(body.material));
+      }
+    particles.sort_by_cell(grid->n_cells());
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Simulator<dim>::current_gravity() const
+  {
+    if (params.gravity_ramp_time > 0 && time < params.gravity_ramp_time)
+      return params.gravity * (time / params.gravity_ramp_time);
+    return params.gravity;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_monitors()
+  {
+    double ke = 0, se = 0, pe = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      {
+        ke += 0.5 * particles.mass[p] * particles.velocity[p].norm_square();
+        se += particles.volume[p] *
+              materials[particles.material_id[p]]->strain_energy_density(
+                particles.stress[p]);
+        pe -= particles.mass[p] * (params.gravity * particles.position[p]);
+      }
+    monitors.kinetic_energy   = ke;
+    monitors.strain_energy    = se;
+    monitors.potential_energy = pe;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::check_stability(const double displacement_ratio)
+  {
+    auto fail = [&](const std::string &what) {
+      termination = "unstable";
+      // Locate the fastest (or a non-finite) point for the diagnosis.
+      unsigned int worst = 0;
+      double       vmax  = -1;
+      for (unsigned int p = 0; p < particles.size(); ++p)
+        {
+          const double v = particles.velocity[p].norm();
+          if (!std::isfinite(v) || v > vmax)
+            {
+              worst = p;
+              vmax  = std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+              if (!std::isfinite(v))
+                break;
+            }
+        }
+      std::ostringstream s;
+      s << "unstable at step " << step << ", t = " << time << " s, dt = " << dt
+        << " s: " << what;
+      if (particles.size() > 0)
+        s << "; fastest material point (body " << particles.body_id[worst]
+          << ") at " << to_string(particles.position[worst])
+          << " with speed " << vmax << " m/s";
+      s << ". Reduce Simulation/Courant number or Simulation/Fixed time step, "
+           "or check the material parameters.";
+      diagnosis = s.str();
+      return false;
+    };
+
+    if (!std::isfinite(displacement_ratio) ||
+        !std::isfinite(monitors.kinetic_energy) ||
+        !std::isfinite(monitors.strain_energy))
+      return fail("a non-finite value appeared (velocity, stress or "
+                  "position)");
+    if (displacement_ratio > 1.)
+      return fail("a material point moved " +
+                  std::to_string(displacement_ratio) +
+                  " times its cell's smallest altitude in one step (it "
+                  "crossed more than one cell)");
+
+    energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
+                               monitors.external_work}});
+    if (energy_history.size() > params.ke_growth_window + 1)
+      energy_history.pop_front();
+    if (energy_history.size() == params.ke_growth_window + 1)
+      {
+        const auto  &old = energy_history.front();
+        const double available =
+          old[0] + std::max(0., monitors.external_work - old[1]);
+        if (monitors.kinetic_energy >
+              params.ke_growth_factor * available &&
+            monitors.kinetic_energy > 1e-200)
+          return fail("the kinetic energy grew to " +
+                      std::to_string(monitors.kinetic_energy) + " J, more than " +
+                      std::to_string(params.ke_growth_factor) +
+                      " times the energy available " +
+                      std::to_string(params.ke_growth_window) +
+                      " steps earlier plus the external work since");
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::advance()
+  {
+    using Clock = std::chrono::steady_clock;
+    auto timed  = [&](const Stage s, const auto &f) {
+      const auto t0 = Clock::now();
+      f();
+      stage_seconds[s] +=
+        std::chrono::duration<double>(Clock::now() - t0).count();
+    };
+
+    AssertThrow(particles.size() > 0,
+                ExcMessage("No material point is left in the mesh."));
+
+    double dt_stable = 0;
+    timed(time_step_stage, [&] {
+      dt_stable = Stages::stable_time_step(*grid,
+                                           particles,
+                                           materials,
+                                           params.courant);
+    });
+    if (params.fixed_dt > 0)
+      {
+        dt = params.fixed_dt;
+        if (dt > dt_stable / params.courant)
+          {
+            termination = "unstable";
+            diagnosis   = "Simulation/Fixed time step = " +
+                        std::to_string(dt) +
+                        " s exceeds the explicit stability limit " +
+                        std::to_string(dt_stable / params.courant) +
+                        " s at step " + std::to_string(step) +
+                        "; use a smaller fixed time step or 0 (automatic).";
+            return false;
+          }
+      }
+    else
+      dt = dt_stable;
+    if (params.end_time - time < dt)
+      dt = params.end_time - time;
+    if (!(dt > 0) || !std::isfinite(dt))
+      {
+        termination = "unstable";
+        diagnosis   = "the time step became " + std::to_string(dt) +
+                    " s at step " + std::to_string(step) + ".";
+        return false;
+      }
+
+    const Tensor<1, dim> gravity = current_gravity();
+    Stages::GridUpdateResult grid_result;
+    double                   displacement_ratio = 0;
+    unsigned int             lost               = 0;
+
+    timed(p2g_stage, [&] { Stages::p2g(*grid, particles, nodes); });
+    timed(grid_update_stage, [&] {
+      grid_result = Stages::grid_update(
+        *constraints, gravity, params.local_damping, dt, nodes);
+    });
+    timed(g2p_stage, [&] { Stages::g2p(*grid, nodes, dt, particles); });
+    if (params.use_musl)
+      timed(remap_stage,
+            [&] { Stages::remap(*grid, particles, *constraints, nodes); });
+    timed(stress_update_stage, [&] {
+      Stages::stress_update(*grid, nodes, materials, dt, particles);
+    });
+    timed(position_stage, [&] {
+      displacement_ratio =
+        Stages::update_positions(*grid, nodes, dt, particles);
+    });
+    if (std::isfinite(displacement_ratio))
+      timed(relocate_stage,
+            [&] { lost = Stages::relocate(*grid, particles); });
+
+    particle_updates += particles.size();
+    time += dt;
+    ++step;
+    dt_min = (step == 1) ? dt : std::min(dt_min, dt);
+    dt_max = std::max(dt_max, dt);
+
+    bool ok = true;
+    timed(monitor_stage, [&] {
+      compute_monitors();
+      monitors.lost_particles += lost;
+      monitors.external_work += grid_result.external_work_increment;
+      monitors.dissipated_energy += grid_result.damping_work_increment;
+
+      // Eq. (30) from the nodal (remapped) velocities.
+      double nodal_ke = 0;
+      for (const unsigned int i : nodes.active_nodes)
+        nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
+      monitors.dr_energy_ratio =
+        (monitors.external_work > 0) ?
+          nodal_ke / monitors.external_work :
+          std::numeric_limits<double>::infinity();
+      monitors.dr_force_ratio =
+        (grid_result.external_norm_sq > 0) ?
+          std::sqrt(grid_result.unbalanced_norm_sq /
+                    grid_result.external_norm_sq) :
+          std::numeric_limits<double>::infinity();
+
+      if (params.kinetic_damping &&
+          monitors.kinetic_energy < previous_kinetic_energy)
+        {
+          // A kinetic-energy peak has passed: remove all kinetic energy.
+          monitors.dissipated_energy += monitors.kinetic_energy;
+          for (auto &v : particles.velocity)
+            v = Tensor<1, dim>();
+          monitors.kinetic_energy = 0;
+        }
+      previous_kinetic_energy = monitors.kinetic_energy;
+
+      ok = check_stability(displacement_ratio);
+
+      if (monitors.dr_energy_ratio <= params.energy_tolerance &&
+          monitors.dr_force_ratio <= params.force_tolerance)
+        ++converged_steps;
+      else
+        converged_steps = 0;
+    });
+    if (!ok)
+      return false;
+
+    if (params.stop_when_converged &&
+        converged_steps >= params.convergence_window)
+      {
+        termination = "dr_converged";
+        return false;
+      }
+    if (time >= params.end_time * (1 - 1e-14) ||
+        (params.max_steps > 0 && step >= params.max_steps))
+      {
+        termination = "end_time";
+        return false;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_output()
+  {
+    const std::string &dir = params.output_directory;
+    if (params.write_particles)
+      {
+        particle_output.build_patches(particles);
+        const std::string name = particle_series->next_file(time);
+        write_file_atomically(dir + "/" + name, [&](std::ostream &out) {
+          particle_output.write_vtu(out);
+        });
+        particle_series->write_pvd();
+      }
+    if (params.write_grid)
+      {
+        const std::string name = grid_series->next_file(time);
+        write_grid_vtu(*grid, nodes, dir + "/" + name);
+        grid_series->write_pvd();
+      }
+  }
+
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::run()
+  {
+    namespace fs = std::filesystem;
+    using Clock  = std::chrono::steady_clock;
+    const auto   start = Clock::now();
+    const auto  &dir   = params.output_directory;
+    fs::create_directories(dir);
+    for (const char *stale : {"monitors.csv", "summary.json"})
+      fs::remove(fs::path(dir) / stale);
+    for (const auto &entry : fs::directory_iterator(dir))
+      if (entry.path().extension() == ".vtu" ||
+          entry.path().extension() == ".pvd")
+        fs::remove(entry.path());
+
+    particle_series = std::make_unique<PvdSeries>(dir, "particles");
+    grid_series     = std::make_unique<PvdSeries>(dir, "grid");
+    monitor_file    = std::make_unique<MonitorFile>(
+      dir + "/monitors.csv",
+      std::vector<std::string>{"time",
+                               "step",
+                               "dt",
+                               "kinetic_energy",
+                               "strain_energy",
+                               "potential_energy",
+                               "external_work",
+                               "dissipated_energy",
+                               "dr_energy_ratio",
+                               "dr_force_ratio",
+                               "lost_particles"});
+    auto write_monitor_row = [&] {
+      monitor_file->write_row({time,
+                               double(step),
+                               dt,
+                               monitors.kinetic_energy,
+                               monitors.strain_energy,
+                               monitors.potential_energy,
+                               monitors.external_work,
+                               monitors.dissipated_energy,
+                               monitors.dr_energy_ratio,
+                               monitors.dr_force_ratio,
+                               double(monitors.lost_particles)});
+    };
+    const bool interval_output = params.output_interval > 0;
+    const bool any_output =
+      (params.write_particles || params.write_grid) &&
+      (interval_output || params.output_every_steps > 0);
+    write_monitor_row();
+    if (any_output)
+      write_output();
+    next_output_time = params.output_interval;
+
+    if (!params.quiet)
+      std::cout << "fsgmpm: " << dim << "D, " << particles.size()
+                << " material points, " << grid->n_cells() << " cells, "
+                << MultithreadInfo::n_threads() << " threads, "
+                << (params.use_musl ? "MUSL" : "USL") << std::endl;
+
+    auto last_progress = Clock::now();
+    unsigned int last_output_step = 0;
+    bool         running          = true;
+    while (running)
+      {
+        running = advance();
+        if (termination == "unstable")
+          break;
+        if (step % params.monitor_every_steps == 0 || !running)
+          write_monitor_row();
+        const bool output_due =
+          interval_output ? (time >= next_output_time * (1 - 1e-12)) :
+                            (params.output_every_steps > 0 &&
+                             step % params.output_every_steps == 0);
+        if (any_output && (output_due || !running) && last_output_step != step)
+          {
+            const auto t0 = Clock::now();
+            write_output();
+            stage_seconds[output_stage] +=
+              std::chrono::duration<double>(Clock::now() - t0).count();
+            last_output_step = step;
+            while (interval_output && next_output_time <= time * (1 + 1e-12))
+              next_output_time += params.output_interval;
+          }
+        if (!params.quiet &&
+            std::chrono::duration<double>(Clock::now() - last_progress)
+                .count() > 2.)
+          {
+            last_progress = Clock::now();
+            const double elapsed =
+              std::chrono::duration<double>(last_progress - start).count();
+            const double eta =
+              elapsed * (params.end_time - time) / std::max(time, 1e-300);
+            std::cout << "  t = " << std::setprecision(4) << time
+                      << " s  step " << step << "  dt = " << dt
+                      << " s  ETA " << std::setprecision(3) << eta << " s"
+                      << std::endl;
+          }
+      }
+
+    const double wall =
+      std::chrono::duration<double>(Clock::now() - start).count();
+    monitor_file.reset();
+    write_summary(wall);
+    if (!params.quiet)
+      {
+        std::cout << "fsgmpm: " << termination << " after " << step
+                  << " steps, simulated " << std::setprecision(6) << time
+                  << " s in " << std::setprecision(3) << wall << " s wall, "
+                  << std::setprecision(3) << particle_updates / wall
+                  << " particle-updates/s, " << monitors.lost_particles
+                  << " lost particles; output in " << dir << "/"
+                  << std::endl;
+      }
+    if (termination == "unstable")
+      std::cerr << "fsgmpm: " << diagnosis << std::endl;
+    return termination;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_summary(const double wall) const
+  {
+    std::string stages = "{";
+    for (unsigned int s = 0; s < n_stages; ++s)
+      stages += (s ? ", " : "") + json_string(stage_names()[s]) + ": " +
+                json_number(stage_seconds[s]);
+    stages += "}";
+    std::vector<std::pair<std::string, std::string>> entries = {
+      {"dim", std::to_string(dim)},
+      {"particles", std::to_string(particles.size())},
+      {"steps", std::to_string(step)},
+      {"simulated_time", json_number(time)},
+      {"wall_seconds", json_number(wall)},
+      {"particle_updates_per_second", json_number(particle_updates / wall)},
+      {"stage_seconds", stages},
+      {"threads", std::to_string(MultithreadInfo::n_threads())},
+      {"mpi_ranks", "1"},
+      {"lost_particles", std::to_string(monitors.lost_particles)},
+      {"dt_min", json_number(dt_min)},
+      {"dt_max", json_number(dt_max)},
+      {"termination", json_string(termination)},
+      {"diagnosis", json_string(diagnosis)},
+      {"bytes_per_particle", json_number(particles.bytes_per_particle())},
+      {"version", json_string(FSGMPM_VERSION)}};
+    write_json(params.output_directory + "/summary.json", entries);
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace fsgmpm

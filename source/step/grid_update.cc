@@ -1,0 +1,74 @@
+#include <fsgmpm/step/stages.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    template <int dim>
+    GridUpdateResult
+    grid_update(const NodalConstraints<dim> &constraints,
+                const Tensor<1, dim>        &gravity,
+                const double                 alpha,
+                const double                 dt,
+                NodalFields<dim>            &nodes)
+    {
+      GridUpdateResult r;
+      // Nodes with (almost) no mass carry no information; the remap of
+      // Eq. (20) gives them a velocity consistent with their particles.
+      for (const unsigned int i : nodes.active_nodes)
+        {
+          const double m = nodes.mass[i];
+          if (m <= 0)
+            continue;
+          nodes.external_force[i] += m * gravity;
+          // v_old is the unconstrained mapped velocity, so that the
+          // acceleration a = (v_new - v_old)/dt carries the wall's effect
+          // back to the particles in Eq. (19).
+          const Tensor<1, dim> v_old = nodes.momentum[i] / m;
+
+          const Tensor<1, dim> unbalanced =
+            nodes.external_force[i] - nodes.internal_force[i];
+          // Local non-viscous damping: opposes the motion with a fraction of
+          // the unbalanced force, component by component.
+          Tensor<1, dim> damping;
+          if (alpha > 0)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (v_old[d] != 0)
+                damping[d] = -alpha * std::abs(unbalanced[d]) *
+                             (v_old[d] > 0 ? 1. : -1.);
+
+          Tensor<1, dim> v_new = v_old + (dt / m) * (unbalanced + damping);
+          constraints.apply(i, v_new);
+          nodes.velocity[i]     = v_new;
+          nodes.acceleration[i] = (v_new - v_old) / dt;
+
+          const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
+          r.external_work_increment += dt * (nodes.external_force[i] * v_mid);
+          r.damping_work_increment -= dt * (damping * v_mid);
+
+          Tensor<1, dim> free_unbalanced = unbalanced;
+          Tensor<1, dim> free_external   = nodes.external_force[i];
+          constraints.project_out(i, free_unbalanced);
+          constraints.project_out(i, free_external);
+          r.unbalanced_norm_sq += free_unbalanced.norm_square();
+          r.external_norm_sq += free_external.norm_square();
+        }
+      return r;
+    }
+
+    template GridUpdateResult
+    grid_update<2>(const NodalConstraints<2> &,
+                   const Tensor<1, 2> &,
+                   const double,
+                   const double,
+                   NodalFields<2> &);
+    template GridUpdateResult
+    grid_update<3>(const NodalConstraints<3> &,
+                   const Tensor<1, 3> &,
+                   const double,
+                   const double,
+                   NodalFields<3> &);
+  } // namespace Stages
+} // namespace fsgmpm

@@ -1,0 +1,55 @@
+#include <fsgmpm/step/cell_loops.h>
+#include <fsgmpm/step/stages.h>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    template <int dim>
+    void
+    p2g(const BackgroundGrid<dim> &grid,
+        const ParticleStore<dim>  &particles,
+        NodalFields<dim>          &nodes)
+    {
+      nodes.reset_active();
+      for (const unsigned int c : particles.occupied_cells)
+        nodes.activate(grid.cell_nodes[c]);
+
+      CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
+        double         m[dim + 1] = {};
+        Tensor<1, dim> mv[dim + 1];
+        // Eq. (3): F_int,i = sum_p V_p sigma_p grad N_i, constant gradients.
+        Tensor<2, dim> volume_stress;
+        for (unsigned int p = particles.cell_start[c];
+             p < particles.cell_start[c + 1];
+             ++p)
+          {
+            const auto   lambda = grid.barycentric(c, particles.position[p]);
+            const double mp     = particles.mass[p];
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              {
+                m[k] += lambda[k] * mp;
+                mv[k] += (lambda[k] * mp) * particles.velocity[p];
+              }
+            const double V = particles.volume[p];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                volume_stress[i][j] += V * particles.stress[p][i][j];
+          }
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          {
+            const unsigned int n = grid.cell_nodes[c][k];
+            nodes.mass[n] += m[k];
+            nodes.momentum[n] += mv[k];
+            nodes.internal_force[n] +=
+              volume_stress * grid.shape_gradients[c][k];
+          }
+      });
+    }
+
+    template void
+    p2g<2>(const BackgroundGrid<2> &, const ParticleStore<2> &, NodalFields<2> &);
+    template void
+    p2g<3>(const BackgroundGrid<3> &, const ParticleStore<3> &, NodalFields<3> &);
+  } // namespace Stages
+} // namespace fsgmpm

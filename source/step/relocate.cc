@@ -1,0 +1,79 @@
+#include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/step/cell_loops.h>
+#include <fsgmpm/step/stages.h>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    template <int dim>
+    unsigned int
+    relocate(const BackgroundGrid<dim> &grid, ParticleStore<dim> &particles)
+    {
+      const PointLocator<dim> locator(grid);
+      const unsigned int      n = particles.size();
+      CellLoops::parallel_range(n, [&](const unsigned int b, const unsigned int e) {
+        for (unsigned int p = b; p < e; ++p)
+          particles.cell[p] =
+            locator.locate(particles.position[p], particles.cell[p]);
+      });
+
+      unsigned int lost = 0;
+      for (unsigned int p = 0; p < n; ++p)
+        lost += (particles.cell[p] == BackgroundGrid<dim>::invalid);
+      if (lost > 0)
+        {
+          std::vector<std::uint8_t> flag(n, 0);
+          for (unsigned int p = 0; p < n; ++p)
+            flag[p] = (particles.cell[p] == BackgroundGrid<dim>::invalid);
+          particles.remove_flagged(flag);
+        }
+      particles.sort_by_cell(grid.n_cells());
+      return lost;
+    }
+
+
+
+    template <int dim>
+    double
+    stable_time_step(const BackgroundGrid<dim>                    &grid,
+                     const ParticleStore<dim>                     &particles,
+                     const std::vector<std::unique_ptr<Material>> &materials,
+                     const double                                  courant)
+    {
+      double dt = std::numeric_limits<double>::max();
+      for (const unsigned int c : particles.occupied_cells)
+        {
+          double speed = 0;
+          for (unsigned int p = particles.cell_start[c];
+               p < particles.cell_start[c + 1];
+               ++p)
+            {
+              const double rho = particles.mass[p] / particles.volume[p];
+              speed            = std::max(speed,
+                               materials[particles.material_id[p]]->wave_speed(
+                                 rho) +
+                                 particles.velocity[p].norm());
+            }
+          if (speed > 0)
+            dt = std::min(dt, grid.cell_min_altitude[c] / speed);
+        }
+      return courant * dt;
+    }
+
+    template unsigned int
+    relocate<2>(const BackgroundGrid<2> &, ParticleStore<2> &);
+    template unsigned int
+    relocate<3>(const BackgroundGrid<3> &, ParticleStore<3> &);
+    template double
+    stable_time_step<2>(const BackgroundGrid<2> &,
+                        const ParticleStore<2> &,
+                        const std::vector<std::unique_ptr<Material>> &,
+                        const double);
+    template double
+    stable_time_step<3>(const BackgroundGrid<3> &,
+                        const ParticleStore<3> &,
+                        const std::vector<std::unique_ptr<Material>> &,
+                        const double);
+  } // namespace Stages
+} // namespace fsgmpm
