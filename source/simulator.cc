@@ -82,6 +82,22 @@ namespace fsgmpm
                                params.upper_corner,
                                params.subdivisions,
                                triangulation);
+    else if (params.grid_type == "extruded box")
+      {
+        if constexpr (dim == 3)
+          {
+            Triangulation<2> base;
+            MeshGeneration::make_box(Point<2>(params.lower_corner[0],
+                                              params.lower_corner[1]),
+                                     Point<2>(params.upper_corner[0],
+                                              params.upper_corner[1]),
+                                     params.subdivisions,
+                                     base);
+            MeshGeneration::extrude_to_tetrahedra(base,
+                                                  params.extrusion_thickness,
+                                                  triangulation);
+          }
+      }
     else
       MeshGeneration::read_gmsh(params.mesh_file, triangulation);
     grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
@@ -104,8 +120,20 @@ namespace fsgmpm
     nodes.resize(grid->n_nodes());
     setup_bodies();
 
+    reinitialize_state();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::reinitialize_state()
+  {
+    particles.sort_by_cell(grid->n_cells());
     Stages::p2g(*grid, particles, nodes);
     compute_monitors();
+    previous_kinetic_energy = monitors.kinetic_energy;
+    energy_history.clear();
     energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                                monitors.external_work}});
   }

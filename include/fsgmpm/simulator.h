@@ -58,6 +58,12 @@ namespace fsgmpm
     bool
     advance();
 
+    /// Call after changing particle data directly (e.g. prescribing an
+    /// initial velocity field): recomputes the monitors and restarts the
+    /// energy history of the stability guard.
+    void
+    reinitialize_state();
+
     // --- state access (tests, postprocessing) ---------------------------
     const ParticleStore<dim> &
     get_particles() const

@@ -145,6 +145,21 @@ namespace fsgmpm
                                      "in 2D."));
           }
         body.particles_per_cell = prm.get_integer("Particles per cell");
+        {
+          unsigned int n = body.particles_per_cell;
+          while (n % (1u << dim) == 0)
+            n /= (1u << dim);
+          AssertThrow(n == 1,
+                      ExcMessage(body.path + "/Particles per cell must be a "
+                                             "power of " +
+                                 std::to_string(1u << dim) + " in " +
+                                 std::to_string(dim) + "D (1, " +
+                                 std::to_string(1u << dim) + ", " +
+                                 std::to_string(1u << (2 * dim)) +
+                                 ", ...); got " +
+                                 std::to_string(body.particles_per_cell) +
+                                 "."));
+        }
         body.density            = prm.get_double("Density");
         AssertThrow(body.density > 0,
                     ExcMessage(body.path + "/Density must be positive; got " +

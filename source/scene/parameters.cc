@@ -155,9 +155,16 @@ namespace fsgmpm
     {
       prm.declare_entry("Type",
                         "box",
-                        Patterns::Selection("box|gmsh"),
+                        Patterns::Selection("box|gmsh|extruded box"),
                         "box: a box split into simplices; gmsh: read Mesh "
-                        "file.");
+                        "file; extruded box (3D only): the 2D box of the "
+                        "first two coordinates extruded by Extrusion "
+                        "thickness with one layer of tetrahedra, so that it "
+                        "matches the 2D plane-strain mesh.");
+      prm.declare_entry("Extrusion thickness",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Type = extruded box: thickness in z (m, > 0).");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double()),
@@ -267,22 +274,33 @@ namespace fsgmpm
     prm.leave_subsection();
 
     prm.enter_subsection("Grid");
-    grid_type = prm.get("Type");
-    if (grid_type == "box")
+    grid_type           = prm.get("Type");
+    extrusion_thickness = prm.get_double("Extrusion thickness");
+    AssertThrow(grid_type != "extruded box" || dim == 3,
+                ExcMessage("Grid/Type = extruded box needs Simulation/"
+                           "Dimension = 3."));
+    AssertThrow(grid_type != "extruded box" || extrusion_thickness > 0,
+                ExcMessage("Grid/Extrusion thickness must be positive."));
+    if (grid_type == "box" || grid_type == "extruded box")
       {
-        lower_corner = Point<dim>(
-          parse_vector<dim>(prm.get("Lower corner"), "Grid/Lower corner"));
-        upper_corner = Point<dim>(
-          parse_vector<dim>(prm.get("Upper corner"), "Grid/Upper corner"));
-        for (unsigned int d = 0; d < dim; ++d)
+        const unsigned int box_dim = (grid_type == "box") ? dim : 2;
+        const auto         lo =
+          parse_vector<dim>(prm.get("Lower corner"), "Grid/Lower corner");
+        const auto hi =
+          parse_vector<dim>(prm.get("Upper corner"), "Grid/Upper corner");
+        lower_corner = Point<dim>(lo);
+        upper_corner = Point<dim>(hi);
+        if (box_dim == 2 && dim == 3)
+          upper_corner[2] = extrusion_thickness;
+        for (unsigned int d = 0; d < box_dim; ++d)
           AssertThrow(upper_corner[d] > lower_corner[d],
                       ExcMessage("Grid/Upper corner must exceed Grid/Lower "
                                  "corner in every coordinate."));
         const auto items =
           Utilities::split_string_list(prm.get("Subdivisions"), ',');
-        AssertThrow(items.size() == dim,
+        AssertThrow(items.size() == box_dim,
                     ExcMessage("Grid/Subdivisions must have " +
-                               std::to_string(dim) + " entries; got <" +
+                               std::to_string(box_dim) + " entries; got <" +
                                prm.get("Subdivisions") + ">."));
         for (const auto &s : items)
           subdivisions.push_back(Utilities::string_to_int(s));

@@ -59,6 +59,7 @@ namespace fsgmpm
     Point<dim>                                  lower_corner, upper_corner;
     std::vector<unsigned int>                   subdivisions;
     std::string                                 mesh_file;
+    double                                      extrusion_thickness;
     std::map<types::boundary_id, WallCondition> walls;
 
     // Output

@@ -1,0 +1,60 @@
+#!/bin/bash
+# Bad input must give a clear message naming the parameter (or file), a
+# non-zero exit status, and write nothing (no output directory).
+# Usage: bad_input.sh <fsgmpm executable> <tests source dir>
+set -u
+exe=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+passed=0
+
+# expect_error <name> <regex the message must match> <fsgmpm arguments...>
+expect_error() {
+  local name=$1 pattern=$2
+  shift 2
+  rm -rf out
+  "$exe" "$@" --set "Output/Directory=out" >stdout.txt 2>stderr.txt
+  local status=$?
+  local msg
+  msg=$(cat stdout.txt stderr.txt)
+  if [ $status -eq 0 ]; then
+    echo "FAIL $name: exit status 0"; failures=$((failures + 1)); return
+  fi
+  if ! grep -Eq "$pattern" <<<"$msg"; then
+    echo "FAIL $name: message does not match /$pattern/:"; echo "$msg"
+    failures=$((failures + 1)); return
+  fi
+  if [ -e out ]; then
+    echo "FAIL $name: output was written"; failures=$((failures + 1)); return
+  fi
+  if grep -q "Stacktrace\|Segmentation\|Aborted" <<<"$msg"; then
+    echo "FAIL $name: crashed"; failures=$((failures + 1)); return
+  fi
+  echo "ok   $name: $(head -c 300 stderr.txt | tr '\n' ' ')"
+  passed=$((passed + 1))
+}
+
+cat > unknown.prm <<'PRM'
+subsection Simulation
+  set End tme = 1
+end
+PRM
+expect_error "unknown parameter in prm" "End tme" unknown.prm
+expect_error "unknown parameter in --set" "Simulation/End tme" --set "Simulation/End tme=1"
+expect_error "unknown subsection in --set" "Simulaton/End time" --set "Simulaton/End time=1"
+expect_error "negative density" "Bodies/Body 0/Density|Density" --set "Bodies/Body 0/Density=-1000"
+expect_error "nu = 0.5" "Poisson's ratio" --set "Bodies/Body 0/Linear elastic/Poisson's ratio=0.5"
+expect_error "body outside the mesh" "Body 0.*outside the background mesh" --set "Bodies/Body 0/Box upper corner=1.5, 0.4"
+expect_error "missing mesh file" "no_such_mesh.msh" --set "Grid/Type=gmsh" --set "Grid/Mesh file=no_such_mesh.msh"
+expect_error "missing prm file" "no_such_file.prm" no_such_file.prm
+expect_error "Courant number > 1" "Courant number" --set "Simulation/Courant number=1.5"
+expect_error "bad wall type" "Grid/Boundary conditions" --set "Grid/Boundary conditions=0: sticky"
+expect_error "wrong vector length" "Bodies/Body 0/Box lower corner" --set "Bodies/Body 0/Box lower corner=0.3"
+expect_error "bad particles per cell" "Particles per cell" --set "Bodies/Body 0/Particles per cell=5"
+expect_error "self-intersecting polygon" "intersects itself" --set "Bodies/Body 0/Shape=polygon" --set "Bodies/Body 0/Polygon vertices=0.3,0.2; 0.6,0.4; 0.6,0.2; 0.3,0.4"
+expect_error "unknown option" "Unknown option" --frobnicate
+
+echo "bad input: $passed passed, $failures failed"
+[ $failures -eq 0 ]
