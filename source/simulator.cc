@@ -6,6 +6,7 @@
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/simulator.h>
+#include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
 #include <chrono>
@@ -200,14 +201,39 @@ namespace fsgmpm
   void
   Simulator<dim>::compute_monitors()
   {
+    // Partial sums per occupied cell in parallel, then summed in cell order:
+    // the result does not depend on the number of threads.
+    const auto                        &cells = particles.occupied_cells;
+    std::vector<std::array<double, 3>> partial(cells.size());
+    CellLoops::parallel_range(
+      cells.size(),
+      [&](const unsigned int b, const unsigned int e) {
+        for (unsigned int i = b; i < e; ++i)
+          {
+            const unsigned int c = cells[i];
+            double             k = 0, s = 0, g = 0;
+            for (unsigned int p = particles.cell_start[c];
+                 p < particles.cell_start[c + 1];
+                 ++p)
+              {
+                k += 0.5 * particles.mass[p] *
+                     particles.velocity[p].norm_square();
+                s += particles.volume[p] *
+                     materials[particles.material_id[p]]
+                       ->strain_energy_density(particles.stress[p]);
+                g -= particles.mass[p] *
+                     (params.gravity * particles.position[p]);
+              }
+            partial[i] = {{k, s, g}};
+          }
+      },
+      16);
     double ke = 0, se = 0, pe = 0;
-    for (unsigned int p = 0; p < particles.size(); ++p)
+    for (const auto &q : partial)
       {
-        ke += 0.5 * particles.mass[p] * particles.velocity[p].norm_square();
-        se += particles.volume[p] *
-              materials[particles.material_id[p]]->strain_energy_density(
-                particles.stress[p]);
-        pe -= particles.mass[p] * (params.gravity * particles.position[p]);
+        ke += q[0];
+        se += q[1];
+        pe += q[2];
       }
     monitors.kinetic_energy   = ke;
     monitors.strain_energy    = se;
@@ -595,6 +621,23 @@ namespace fsgmpm
       {"bytes_per_particle", json_number(particles.bytes_per_particle())},
       {"version", json_string(FSGMPM_VERSION)}};
     write_json(params.output_directory + "/summary.json", entries);
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::get_grid_memory_per_particle() const
+  {
+    if (particles.size() == 0)
+      return 0;
+    const double per_cell = sizeof(unsigned int) * 2 * (dim + 1) +
+                            sizeof(double) * (dim + dim * dim +
+                                              dim * (dim + 1) + 2) +
+                            sizeof(types::boundary_id) * (dim + 1) +
+                            sizeof(unsigned int) * 2;
+    const double per_node = sizeof(double) * (1 + 5 * dim + dim) +
+                            2 * sizeof(unsigned int);
+    return (per_cell * grid->n_cells() + per_node * grid->n_nodes()) /
+           particles.size();
   }
 
   template class Simulator<2>;

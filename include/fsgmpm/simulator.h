@@ -133,6 +133,10 @@ namespace fsgmpm
       return params;
     }
 
+    /// Memory of the grid and nodal data divided by the number of points.
+    double
+    get_grid_memory_per_particle() const;
+
     /// Names of the timed stages, in step order.
     static const std::vector<std::string> &
     stage_names();

@@ -72,7 +72,7 @@ namespace fsgmpm
         const SymmetricTensor<2, 3> &d   = kin[i].strain_rate;
         const double                 trd = trace(d);
         const SymmetricTensor<2, 3>  rotated =
-          rotate_stress(stress[i], kin[i].spin, dt);
+          rotate_stress(stress[i], kin[i].rotation);
         stress[i] = rotated + dt * (lambda * trd * unit_symmetric_tensor<3>() +
                                     2 * mu * d - trd * rotated);
       }

@@ -184,7 +184,7 @@ namespace fsgmpm
                         "Type = gmsh: path of a .msh file of triangles or "
                         "tetrahedra (relative to the working directory).");
       prm.declare_entry("Boundary conditions",
-                        "0: roller, 1: roller, 2: friction 0.3, 3: free",
+                        "0: roller, 1: roller, 2: roller, 3: free",
                         Patterns::Anything(),
                         "Walls by boundary id: 'id: type, ...' with type "
                         "free, fixed, roller (slip) or 'friction <mu>' "

@@ -41,23 +41,33 @@ namespace fsgmpm
                      const std::vector<std::unique_ptr<Material>> &materials,
                      const double                                  courant)
     {
-      double dt = std::numeric_limits<double>::max();
-      for (const unsigned int c : particles.occupied_cells)
-        {
-          double speed = 0;
-          for (unsigned int p = particles.cell_start[c];
-               p < particles.cell_start[c + 1];
-               ++p)
+      const auto         &cells = particles.occupied_cells;
+      std::vector<double> cell_dt(cells.size());
+      CellLoops::parallel_range(
+        cells.size(),
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int i = b; i < e; ++i)
             {
-              const double rho = particles.mass[p] / particles.volume[p];
-              speed            = std::max(speed,
-                               materials[particles.material_id[p]]->wave_speed(
-                                 rho) +
-                                 particles.velocity[p].norm());
+              const unsigned int c     = cells[i];
+              double             speed = 0;
+              for (unsigned int p = particles.cell_start[c];
+                   p < particles.cell_start[c + 1];
+                   ++p)
+                {
+                  const double rho = particles.mass[p] / particles.volume[p];
+                  speed            = std::max(
+                    speed,
+                    materials[particles.material_id[p]]->wave_speed(rho) +
+                      particles.velocity[p].norm());
+                }
+              cell_dt[i] = (speed > 0) ? grid.cell_min_altitude[c] / speed :
+                                         std::numeric_limits<double>::max();
             }
-          if (speed > 0)
-            dt = std::min(dt, grid.cell_min_altitude[c] / speed);
-        }
+        },
+        16);
+      double dt = std::numeric_limits<double>::max();
+      for (const double d : cell_dt)
+        dt = std::min(dt, d);
       return courant * dt;
     }
 

@@ -1,3 +1,4 @@
+#include <fsgmpm/materials/hill_rotation.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
@@ -26,6 +27,7 @@ namespace fsgmpm
         PointKinematics kin;
         kin.strain_rate = symmetrize(L3);
         kin.spin        = 0.5 * (L3 - transpose(L3));
+        kin.rotation    = incremental_rotation(kin.spin, dt);
 
         Tensor<2, dim> F_increment = unit_symmetric_tensor<dim>();
         F_increment += dt * L;

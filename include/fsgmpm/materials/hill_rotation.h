@@ -14,15 +14,18 @@ namespace fsgmpm
    * R = (I - dt W/2)^{-1} (I + dt W/2). A rigid rotation therefore leaves the
    * principal stresses unchanged to round-off, however large dt W is.
    */
-  inline SymmetricTensor<2, 3>
-  rotate_stress(const SymmetricTensor<2, 3> &sigma,
-                const Tensor<2, 3>          &spin,
-                const double                 dt)
+  inline Tensor<2, 3>
+  incremental_rotation(const Tensor<2, 3> &spin, const double dt)
   {
     const Tensor<2, 3> I = unit_symmetric_tensor<3>();
-    const Tensor<2, 3> R = invert(I - 0.5 * dt * spin) * (I + 0.5 * dt * spin);
-    const Tensor<2, 3> rotated = R * Tensor<2, 3>(sigma) * transpose(R);
-    return symmetrize(rotated);
+    return invert(I - 0.5 * dt * spin) * (I + 0.5 * dt * spin);
+  }
+
+  /// sigma <- R sigma R^T for an orthogonal R.
+  inline SymmetricTensor<2, 3>
+  rotate_stress(const SymmetricTensor<2, 3> &sigma, const Tensor<2, 3> &R)
+  {
+    return symmetrize(R * Tensor<2, 3>(sigma) * transpose(R));
   }
 } // namespace fsgmpm
 

@@ -18,6 +18,9 @@ namespace fsgmpm
   {
     SymmetricTensor<2, 3> strain_rate; ///< symmetric part of grad v
     Tensor<2, 3>          spin;        ///< W = (grad v - grad v^T)/2
+    /// Exactly orthogonal incremental rotation of the step from the spin
+    /// (hill_rotation.h), computed once per cell by the stress stage.
+    Tensor<2, 3> rotation;
   };
 
   /**

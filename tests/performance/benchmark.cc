@@ -1,0 +1,280 @@
+// Benchmark of the full explicit MPM step (elastic block, 2D and 3D, more
+// than 100 000 material points each) against a baseline made of deal.II's
+// stock ParticleHandler with MappingFE doing the same relocation and
+// P2G/G2P (the step-19/step-70 pattern: FEValues at the particles' reference
+// locations, cell by cell). The baseline is a speed reference only: deal.II
+// 9.4 mislocates particles on simplices (SPEC 4).
+//
+// Prints one line per case:
+//   BENCH <case> dim=<d> particles=<n> steps=<s> updates_per_second=<x>
+//         bytes_per_particle=<b> baseline_updates_per_second=<y>
+// and the time per step of each stage. Not a test with a timed assertion.
+
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <fsgmpm/simulator.h>
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+
+#include "test_utilities.h"
+
+using namespace fsgmpm;
+using Clock = std::chrono::steady_clock;
+
+namespace
+{
+  double
+  seconds_since(const Clock::time_point t0)
+  {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+
+  template <int dim>
+  std::string
+  scene()
+  {
+    // The block fills the lower 80% of the mesh; gravity makes it move.
+    if (dim == 2)
+      return R"(
+subsection Simulation
+  set Dimension = 2
+  set End time = 100
+end
+subsection Grid
+  set Upper corner = 1.6, 1.0
+  set Subdivisions = 160, 100
+  set Boundary conditions = 0: roller, 1: roller, 2: roller
+end
+subsection Bodies
+  subsection Body 0
+    set Box lower corner = 0, 0
+    set Box upper corner = 1.6, 0.8
+    set Particles per cell = 4
+    subsection Linear elastic
+      set Young's modulus = 1e6
+    end
+  end
+end
+)";
+    return R"(
+subsection Simulation
+  set Dimension = 3
+  set End time = 100
+end
+subsection Grid
+  set Lower corner = 0, 0, 0
+  set Upper corner = 1.2, 1.0, 0.6
+  set Subdivisions = 24, 20, 12
+  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller
+end
+subsection Bodies
+  subsection Body 0
+    set Box lower corner = 0, 0, 0
+    set Box upper corner = 1.2, 0.8, 0.6
+    set Particles per cell = 8
+    subsection Linear elastic
+      set Young's modulus = 1e6
+    end
+  end
+end
+)";
+  }
+
+  /**
+   * The stock deal.II way: ParticleHandler + MappingFE, properties
+   * (mass, volume, velocity, stress), P2G and G2P with FEValues built from
+   * the particles' reference locations in each cell, then
+   * sort_particles_into_subdomains_and_cells().
+   */
+  template <int dim>
+  double
+  baseline_updates_per_second(const Simulator<dim> &sim,
+                              const unsigned int    steps)
+  {
+    const auto          &grid = sim.get_grid();
+    const auto          &tria = grid.get_triangulation();
+    const auto          &dofh = grid.get_dof_handler();
+    const auto          &fe   = dofh.get_fe();
+    const MappingFE<dim> mapping(FE_SimplexP<dim>(1));
+    const unsigned int   n_props = 2 + dim + dim * dim;
+    Particles::ParticleHandler<dim> handler(tria, mapping, n_props);
+
+    // Insert the simulator's points with their known cells.
+    const auto &ps = sim.get_particles();
+    std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+    for (const auto &cell : tria.active_cell_iterators())
+      cells.push_back(cell);
+    std::vector<double> props(n_props, 0.);
+    for (unsigned int p = 0; p < ps.size(); ++p)
+      {
+        const auto lambda = grid.barycentric(ps.cell[p], ps.position[p]);
+        Point<dim> ref;
+        for (unsigned int d = 0; d < dim; ++d)
+          ref[d] = lambda[d + 1];
+        props[0] = ps.mass[p];
+        props[1] = ps.volume[p];
+        handler.insert_particle(ps.position[p],
+                                ref,
+                                p,
+                                cells[ps.cell[p]],
+                                ArrayView<const double>(props));
+      }
+
+    const unsigned int          n = dofh.n_dofs();
+    std::vector<double>         mass(n);
+    std::vector<Tensor<1, dim>> momentum(n), force(n), velocity(n), accel(n);
+    Tensor<1, dim>              gravity;
+    gravity[1]         = -9.81;
+    const double dt    = 1e-5;
+    const double lame  = 0, mu = 0.5e6 / 1.3; // stress update cost only
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+    const auto t0 = Clock::now();
+    for (unsigned int step = 0; step < steps; ++step)
+      {
+        std::fill(mass.begin(), mass.end(), 0.);
+        std::fill(momentum.begin(), momentum.end(), Tensor<1, dim>());
+        std::fill(force.begin(), force.end(), Tensor<1, dim>());
+        // P2G
+        for (const auto &cell : dofh.active_cell_iterators())
+          {
+            const auto range = handler.particles_in_cell(cell);
+            if (range.begin() == range.end())
+              continue;
+            std::vector<Point<dim>> refs;
+            for (const auto &p : range)
+              refs.push_back(p.get_reference_location());
+            FEValues<dim> fev(mapping,
+                              fe,
+                              Quadrature<dim>(refs),
+                              update_values | update_gradients);
+            fev.reinit(cell);
+            cell->get_dof_indices(dofs);
+            unsigned int q = 0;
+            for (const auto &p : range)
+              {
+                const auto     pr = p.get_properties();
+                Tensor<1, dim> v;
+                Tensor<2, dim> s;
+                for (unsigned int d = 0; d < dim; ++d)
+                  v[d] = pr[2 + d];
+                for (unsigned int d = 0; d < dim * dim; ++d)
+                  s[d / dim][d % dim] = pr[2 + dim + d];
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  {
+                    const double N = fev.shape_value(i, q);
+                    mass[dofs[i]] += N * pr[0];
+                    momentum[dofs[i]] += N * pr[0] * v;
+                    force[dofs[i]] += N * pr[0] * gravity -
+                                      pr[1] * s * fev.shape_grad(i, q);
+                  }
+                ++q;
+              }
+          }
+        // Grid update
+        for (unsigned int i = 0; i < n; ++i)
+          if (mass[i] > 0)
+            {
+              accel[i]    = force[i] / mass[i];
+              velocity[i] = momentum[i] / mass[i] + dt * accel[i];
+            }
+        // G2P: velocity, strain rate, stress, position
+        for (const auto &cell : dofh.active_cell_iterators())
+          {
+            const auto range = handler.particles_in_cell(cell);
+            if (range.begin() == range.end())
+              continue;
+            std::vector<Point<dim>> refs;
+            for (const auto &p : range)
+              refs.push_back(p.get_reference_location());
+            FEValues<dim> fev(mapping,
+                              fe,
+                              Quadrature<dim>(refs),
+                              update_values | update_gradients);
+            fev.reinit(cell);
+            cell->get_dof_indices(dofs);
+            unsigned int q = 0;
+            for (auto &p : range)
+              {
+                auto           pr = p.get_properties();
+                Tensor<1, dim> a, v;
+                Tensor<2, dim> L;
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  {
+                    const double N = fev.shape_value(i, q);
+                    a += N * accel[dofs[i]];
+                    v += N * velocity[dofs[i]];
+                    L += outer_product(velocity[dofs[i]], fev.shape_grad(i, q));
+                  }
+                for (unsigned int d = 0; d < dim; ++d)
+                  pr[2 + d] += dt * a[d];
+                const Tensor<2, dim> eps = 0.5 * (L + transpose(L));
+                for (unsigned int d = 0; d < dim * dim; ++d)
+                  pr[2 + dim + d] += dt * (2 * mu * eps[d / dim][d % dim] +
+                                           (d / dim == d % dim ? lame * trace(eps) : 0.));
+                p.set_location(p.get_location() + dt * v);
+                ++q;
+              }
+          }
+        handler.sort_particles_into_subdomains_and_cells();
+      }
+    return double(ps.size()) * steps / seconds_since(t0);
+  }
+
+  template <int dim>
+  void
+  run_case(const std::string &name, const unsigned int steps)
+  {
+    auto           prm = test_tools::make_parameters(scene<dim>());
+    Simulator<dim> sim(*prm);
+    const unsigned int n = sim.get_particles().size();
+    // One warm-up step, then the timed steps.
+    sim.advance();
+    const std::vector<double> before = sim.get_stage_seconds();
+    const auto                t0     = Clock::now();
+    for (unsigned int s = 0; s < steps; ++s)
+      AssertThrow(sim.advance(), ExcMessage("benchmark run stopped early"));
+    const double wall = seconds_since(t0);
+    const double ups  = double(n) * steps / wall;
+    const double bpp  = sim.get_particles().bytes_per_particle() +
+                       sim.get_grid_memory_per_particle();
+    const double baseline = baseline_updates_per_second(sim, std::max(2u, steps / 5));
+    std::cout << "BENCH " << name << " dim=" << dim << " particles=" << n
+              << " steps=" << steps << " updates_per_second=" << std::setprecision(4)
+              << ups << " bytes_per_particle=" << std::setprecision(4) << bpp
+              << " baseline_updates_per_second=" << baseline
+              << " speedup=" << ups / baseline
+              << " threads=" << MultithreadInfo::n_threads() << std::endl;
+    const auto &names = Simulator<dim>::stage_names();
+    for (unsigned int s = 0; s < names.size(); ++s)
+      std::cout << "STAGE " << name << " " << names[s] << "_ms_per_step="
+                << 1e3 * (sim.get_stage_seconds()[s] - before[s]) / steps
+                << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      const unsigned int steps = (argc > 1) ? std::stoi(argv[1]) : 50;
+      run_case<2>("elastic_block_2d", steps);
+      run_case<3>("elastic_block_3d", std::max(2u, steps / 2));
+    }
+  catch (std::exception &e)
+    {
+      std::cerr << e.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
