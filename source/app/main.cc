@@ -15,7 +15,11 @@
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -86,6 +90,64 @@ namespace
       }
     for (unsigned int i = 0; i < parts.size(); ++i)
       prm.leave_subsection();
+  }
+
+  /// Undo ParameterHandler's name mangling in its JSON output ("_20" for a
+  /// space, "_27" for an apostrophe, ...).
+  std::string
+  demangle(const std::string &s)
+  {
+    std::string out;
+    for (unsigned int i = 0; i < s.size(); ++i)
+      if (s[i] == '_' && i + 2 < s.size() + 0 && std::isxdigit(s[i + 1]) &&
+          std::isxdigit(s[i + 2]))
+        {
+          out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        }
+      else
+        out += s[i];
+    return out;
+  }
+
+  /// Print every parameter as a valid prm file: documentation, default and
+  /// allowed values as comments above each "set" line with the current value.
+  void
+  print_parameter_manual(const ParameterHandler &prm, std::ostream &out)
+  {
+    std::stringstream json;
+    prm.print_parameters(json,
+                         ParameterHandler::OutputStyle(
+                           ParameterHandler::JSON |
+                           ParameterHandler::KeepDeclarationOrder));
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    std::function<void(const boost::property_tree::ptree &, unsigned int)>
+      print = [&](const boost::property_tree::ptree &node, unsigned int depth) {
+        const std::string indent(2 * depth, ' ');
+        for (const auto &[name, child] : node)
+          {
+            const std::string key = demangle(name);
+            if (child.count("value") == 1)
+              {
+                out << indent << "# "
+                    << child.get<std::string>("documentation") << "\n"
+                    << indent << "# Default: "
+                    << child.get<std::string>("default_value")
+                    << "; allowed: "
+                    << child.get<std::string>("pattern_description") << "\n"
+                    << indent << "set " << key << " = "
+                    << child.get<std::string>("value") << "\n\n";
+              }
+            else
+              {
+                out << indent << "subsection " << key << "\n";
+                print(child, depth + 1);
+                out << indent << "end\n\n";
+              }
+          }
+      };
+    print(tree, 0);
   }
 
   template <int dim>
@@ -162,7 +224,7 @@ main(int argc, char **argv)
 
       if (print_parameters)
         {
-          prm.print_parameters(std::cout, ParameterHandler::Text);
+          print_parameter_manual(prm, std::cout);
           return 0;
         }
 
