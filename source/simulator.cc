@@ -322,8 +322,15 @@ namespace fsgmpm
         std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
-    AssertThrow(particles.size() > 0,
-                ExcMessage("No material point is left in the mesh."));
+    if (particles.size() == 0)
+      {
+        termination = "error";
+        diagnosis   = "no material point is left in the mesh (all " +
+                    std::to_string(monitors.lost_particles) +
+                    " left through its boundary) at step " +
+                    std::to_string(step) + ".";
+        return false;
+      }
 
     double dt_stable = 0;
     timed(time_step_stage, [&] {
@@ -424,7 +431,9 @@ namespace fsgmpm
 
       ok = check_stability(displacement_ratio);
 
-      if (monitors.dr_energy_ratio <= params.energy_tolerance &&
+      // Convergence is only meaningful once the full load is applied.
+      if (time >= params.gravity_ramp_time &&
+          monitors.dr_energy_ratio <= params.energy_tolerance &&
           monitors.dr_force_ratio <= params.force_tolerance)
         ++converged_steps;
       else
@@ -539,7 +548,7 @@ namespace fsgmpm
     while (running)
       {
         running = advance();
-        if (termination == "unstable")
+        if (termination == "unstable" || termination == "error")
           break;
         if (step % params.monitor_every_steps == 0 || !running)
           write_monitor_row();
@@ -587,7 +596,7 @@ namespace fsgmpm
                   << " lost particles; output in " << dir << "/"
                   << std::endl;
       }
-    if (termination == "unstable")
+    if (termination == "unstable" || termination == "error")
       std::cerr << "fsgmpm: " << diagnosis << std::endl;
     return termination;
   }

@@ -156,7 +156,7 @@ namespace
   {
     fsgmpm::Simulator<dim> simulator(prm);
     const std::string      termination = simulator.run();
-    return termination == "unstable" ? 3 : 0;
+    return termination == "unstable" ? 3 : (termination == "error" ? 1 : 0);
   }
 } // namespace
 

@@ -16,20 +16,17 @@
 
 using namespace fsgmpm;
 
-TEST(ElasticColumnSelfWeight, StressVersusDepth2D)
+namespace
+{
+void
+check_column(const std::string &damping, const std::string &label)
 {
   const double H = 1.0, rho = 1000, g = 9.81, nu = 0.3, h = 0.05;
-  auto         prm = test_tools::make_parameters(R"(
+  auto         prm = test_tools::make_parameters(damping + R"(
 subsection Simulation
   set End time = 20
   set Gravity = 0, -9.81
   set Termination = dr_converged
-end
-subsection Damping
-  set Local damping coefficient = 0.5
-  set Energy tolerance = 1e-3
-  set Force tolerance = 1e-3
-  set Convergence window = 100
 end
 subsection Grid
   set Lower corner = 0, 0
@@ -119,7 +116,7 @@ end
                               std::abs(cm.sxx / cm.syy / ratio - 1),
                               std::abs(cm.szz / cm.syy / ratio - 1)});
     }
-  std::cout << "[ measured ] column: " << sim.get_step()
+  std::cout << "[ measured ] column, " << label << ": " << sim.get_step()
             << " steps to Eq. (30) at 1e-3, worst layer sigma_yy error "
             << 100 * worst_syy << " %, worst lateral ratio error "
             << 100 * worst_ratio << " % (" << cells.size() << " layers, "
@@ -127,4 +124,35 @@ end
             << std::endl;
   EXPECT_LT(worst_syy, 0.03);
   EXPECT_LT(worst_ratio, 0.03);
+}
+} // namespace
+
+TEST(ElasticColumnSelfWeight, LocalDamping)
+{
+  check_column(R"(
+subsection Damping
+  set Local damping coefficient = 0.5
+  set Energy tolerance = 1e-3
+  set Force tolerance = 1e-3
+  set Convergence window = 100
+end
+)",
+               "local damping 0.5");
+}
+
+// Kinetic damping with a gravity ramp must reach the same static state.
+TEST(ElasticColumnSelfWeight, KineticDampingWithGravityRamp)
+{
+  check_column(R"(
+subsection Damping
+  set Kinetic damping = true
+  set Energy tolerance = 1e-3
+  set Force tolerance = 1e-3
+  set Convergence window = 100
+end
+subsection Simulation
+  set Gravity ramp time = 0.02
+end
+)",
+               "kinetic damping, gravity ramp 0.02 s");
 }
