@@ -88,12 +88,11 @@ namespace fsgmpm
         if constexpr (dim == 3)
           {
             Triangulation<2> base;
-            MeshGeneration::make_box(Point<2>(params.lower_corner[0],
-                                              params.lower_corner[1]),
-                                     Point<2>(params.upper_corner[0],
-                                              params.upper_corner[1]),
-                                     params.subdivisions,
-                                     base);
+            MeshGeneration::make_box(
+              Point<2>(params.lower_corner[0], params.lower_corner[1]),
+              Point<2>(params.upper_corner[0], params.upper_corner[1]),
+              params.subdivisions,
+              base);
             MeshGeneration::extrude_to_tetrahedra(base,
                                                   params.extrusion_thickness,
                                                   triangulation);
@@ -111,13 +110,12 @@ namespace fsgmpm
           mesh_ids.insert(grid->face_boundary_id[c][k]);
     for (const auto &[id, wall] : params.walls)
       AssertThrow(mesh_ids.count(id) == 1,
-                  ExcMessage("Grid/Boundary conditions names boundary id " +
-                             std::to_string(id) +
-                             ", but the mesh has no boundary face with that "
-                             "id."));
+                  ExcMessage("Grid/Boundary conditions names boundary id "
+                             + std::to_string(id)
+                             + ", but the mesh has no boundary face with that "
+                               "id."));
 
-    constraints =
-      std::make_unique<NodalConstraints<dim>>(*grid, params.walls);
+    constraints = std::make_unique<NodalConstraints<dim>>(*grid, params.walls);
     nodes.resize(grid->n_nodes());
     setup_bodies();
 
@@ -170,12 +168,11 @@ namespace fsgmpm
               y_top = std::max(y_top, p[1]);
             for (unsigned int p = first; p < particles.size(); ++p)
               {
-                const double syy =
-                  body.density * params.gravity[1] *
-                  (y_top - particles.position[p][1]);
+                const double syy = body.density * params.gravity[1]
+                                   * (y_top - particles.position[p][1]);
                 SymmetricTensor<2, 3> s;
-                s[0][0] = s[2][2] = body.k0 * syy;
-                s[1][1]           = syy;
+                s[0][0] = s[2][2]   = body.k0 * syy;
+                s[1][1]             = syy;
                 particles.stress[p] = s;
               }
           }
@@ -216,13 +213,13 @@ namespace fsgmpm
                  p < particles.cell_start[c + 1];
                  ++p)
               {
-                k += 0.5 * particles.mass[p] *
-                     particles.velocity[p].norm_square();
-                s += particles.volume[p] *
-                     materials[particles.material_id[p]]
-                       ->strain_energy_density(particles.stress[p]);
-                g -= particles.mass[p] *
-                     (params.gravity * particles.position[p]);
+                k += 0.5 * particles.mass[p]
+                     * particles.velocity[p].norm_square();
+                s += particles.volume[p]
+                     * materials[particles.material_id[p]]
+                         ->strain_energy_density(particles.stress[p]);
+                g -= particles.mass[p]
+                     * (params.gravity * particles.position[p]);
               }
             partial[i] = {{k, s, g}};
           }
@@ -257,7 +254,8 @@ namespace fsgmpm
           if (!std::isfinite(v) || v > vmax)
             {
               worst = p;
-              vmax  = std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+              vmax  = std::isfinite(v) ? v
+                                       : std::numeric_limits<double>::infinity();
               if (!std::isfinite(v))
                 break;
             }
@@ -267,24 +265,23 @@ namespace fsgmpm
         << " s: " << what;
       if (particles.size() > 0)
         s << "; fastest material point (body " << particles.body_id[worst]
-          << ") at " << to_string(particles.position[worst])
-          << " with speed " << vmax << " m/s";
+          << ") at " << to_string(particles.position[worst]) << " with speed "
+          << vmax << " m/s";
       s << ". Reduce Simulation/Courant number or Simulation/Fixed time step, "
            "or check the material parameters.";
       diagnosis = s.str();
       return false;
     };
 
-    if (!std::isfinite(displacement_ratio) ||
-        !std::isfinite(monitors.kinetic_energy) ||
-        !std::isfinite(monitors.strain_energy))
+    if (!std::isfinite(displacement_ratio)
+        || !std::isfinite(monitors.kinetic_energy)
+        || !std::isfinite(monitors.strain_energy))
       return fail("a non-finite value appeared (velocity, stress or "
                   "position)");
     if (displacement_ratio > 1.)
-      return fail("a material point moved " +
-                  std::to_string(displacement_ratio) +
-                  " times its cell's smallest altitude in one step (it "
-                  "crossed more than one cell)");
+      return fail("a material point moved " + std::to_string(displacement_ratio)
+                  + " times its cell's smallest altitude in one step (it "
+                    "crossed more than one cell)");
 
     energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                                monitors.external_work}});
@@ -293,17 +290,17 @@ namespace fsgmpm
     if (energy_history.size() == params.ke_growth_window + 1)
       {
         const auto  &old = energy_history.front();
-        const double available =
-          old[0] + std::max(0., monitors.external_work - old[1]);
-        if (monitors.kinetic_energy >
-              params.ke_growth_factor * available &&
-            monitors.kinetic_energy > 1e-200)
-          return fail("the kinetic energy grew to " +
-                      std::to_string(monitors.kinetic_energy) + " J, more than " +
-                      std::to_string(params.ke_growth_factor) +
-                      " times the energy available " +
-                      std::to_string(params.ke_growth_window) +
-                      " steps earlier plus the external work since");
+        const double available
+          = old[0] + std::max(0., monitors.external_work - old[1]);
+        if (monitors.kinetic_energy > params.ke_growth_factor * available
+            && monitors.kinetic_energy > 1e-200)
+          return fail("the kinetic energy grew to "
+                      + std::to_string(monitors.kinetic_energy)
+                      + " J, more than "
+                      + std::to_string(params.ke_growth_factor)
+                      + " times the energy available "
+                      + std::to_string(params.ke_growth_window)
+                      + " steps earlier plus the external work since");
       }
     return true;
   }
@@ -318,26 +315,24 @@ namespace fsgmpm
     auto timed  = [&](const Stage s, const auto &f) {
       const auto t0 = Clock::now();
       f();
-      stage_seconds[s] +=
-        std::chrono::duration<double>(Clock::now() - t0).count();
+      stage_seconds[s]
+        += std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
     if (particles.size() == 0)
       {
         termination = "error";
-        diagnosis   = "no material point is left in the mesh (all " +
-                    std::to_string(monitors.lost_particles) +
-                    " left through its boundary) at step " +
-                    std::to_string(step) + ".";
+        diagnosis   = "no material point is left in the mesh (all "
+                    + std::to_string(monitors.lost_particles)
+                    + " left through its boundary) at step "
+                    + std::to_string(step) + ".";
         return false;
       }
 
     double dt_stable = 0;
     timed(time_step_stage, [&] {
-      dt_stable = Stages::stable_time_step(*grid,
-                                           particles,
-                                           materials,
-                                           params.courant);
+      dt_stable
+        = Stages::stable_time_step(*grid, particles, materials, params.courant);
     });
     if (params.fixed_dt > 0)
       {
@@ -345,12 +340,11 @@ namespace fsgmpm
         if (dt > dt_stable / params.courant)
           {
             termination = "unstable";
-            diagnosis   = "Simulation/Fixed time step = " +
-                        std::to_string(dt) +
-                        " s exceeds the explicit stability limit " +
-                        std::to_string(dt_stable / params.courant) +
-                        " s at step " + std::to_string(step) +
-                        "; use a smaller fixed time step or 0 (automatic).";
+            diagnosis   = "Simulation/Fixed time step = " + std::to_string(dt)
+                        + " s exceeds the explicit stability limit "
+                        + std::to_string(dt_stable / params.courant)
+                        + " s at step " + std::to_string(step)
+                        + "; use a smaller fixed time step or 0 (automatic).";
             return false;
           }
       }
@@ -361,12 +355,12 @@ namespace fsgmpm
     if (!(dt > 0) || !std::isfinite(dt))
       {
         termination = "unstable";
-        diagnosis   = "the time step became " + std::to_string(dt) +
-                    " s at step " + std::to_string(step) + ".";
+        diagnosis = "the time step became " + std::to_string(dt) + " s at step "
+                    + std::to_string(step) + ".";
         return false;
       }
 
-    const Tensor<1, dim> gravity = current_gravity();
+    const Tensor<1, dim>     gravity = current_gravity();
     Stages::GridUpdateResult grid_result;
     double                   displacement_ratio = 0;
     unsigned int             lost               = 0;
@@ -384,12 +378,11 @@ namespace fsgmpm
       Stages::stress_update(*grid, nodes, materials, dt, particles);
     });
     timed(position_stage, [&] {
-      displacement_ratio =
-        Stages::update_positions(*grid, nodes, dt, particles);
+      displacement_ratio
+        = Stages::update_positions(*grid, nodes, dt, particles);
     });
     if (std::isfinite(displacement_ratio))
-      timed(relocate_stage,
-            [&] { lost = Stages::relocate(*grid, particles); });
+      timed(relocate_stage, [&] { lost = Stages::relocate(*grid, particles); });
 
     particle_updates += particles.size();
     time += dt;
@@ -408,18 +401,16 @@ namespace fsgmpm
       double nodal_ke = 0;
       for (const unsigned int i : nodes.active_nodes)
         nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
-      monitors.dr_energy_ratio =
-        (monitors.external_work > 0) ?
-          nodal_ke / monitors.external_work :
-          std::numeric_limits<double>::infinity();
-      monitors.dr_force_ratio =
-        (grid_result.external_norm_sq > 0) ?
-          std::sqrt(grid_result.unbalanced_norm_sq /
-                    grid_result.external_norm_sq) :
-          std::numeric_limits<double>::infinity();
+      monitors.dr_energy_ratio = (monitors.external_work > 0)
+                                   ? nodal_ke / monitors.external_work
+                                   : std::numeric_limits<double>::infinity();
+      monitors.dr_force_ratio  = (grid_result.external_norm_sq > 0)
+                                   ? std::sqrt(grid_result.unbalanced_norm_sq
+                                              / grid_result.external_norm_sq)
+                                   : std::numeric_limits<double>::infinity();
 
-      if (params.kinetic_damping &&
-          monitors.kinetic_energy < previous_kinetic_energy)
+      if (params.kinetic_damping
+          && monitors.kinetic_energy < previous_kinetic_energy)
         {
           // A kinetic-energy peak has passed: remove all kinetic energy.
           monitors.dissipated_energy += monitors.kinetic_energy;
@@ -432,9 +423,9 @@ namespace fsgmpm
       ok = check_stability(displacement_ratio);
 
       // Convergence is only meaningful once the full load is applied.
-      if (time >= params.gravity_ramp_time &&
-          monitors.dr_energy_ratio <= params.energy_tolerance &&
-          monitors.dr_force_ratio <= params.force_tolerance)
+      if (time >= params.gravity_ramp_time
+          && monitors.dr_energy_ratio <= params.energy_tolerance
+          && monitors.dr_force_ratio <= params.force_tolerance)
         ++converged_steps;
       else
         converged_steps = 0;
@@ -442,14 +433,14 @@ namespace fsgmpm
     if (!ok)
       return false;
 
-    if (params.stop_when_converged &&
-        converged_steps >= params.convergence_window)
+    if (params.stop_when_converged
+        && converged_steps >= params.convergence_window)
       {
         termination = "dr_converged";
         return false;
       }
-    if (time >= params.end_time * (1 - 1e-14) ||
-        (params.max_steps > 0 && step >= params.max_steps))
+    if (time >= params.end_time * (1 - 1e-14)
+        || (params.max_steps > 0 && step >= params.max_steps))
       {
         termination = "end_time";
         return false;
@@ -487,16 +478,16 @@ namespace fsgmpm
   std::string
   Simulator<dim>::run()
   {
-    namespace fs = std::filesystem;
-    using Clock  = std::chrono::steady_clock;
-    const auto   start = Clock::now();
-    const auto  &dir   = params.output_directory;
+    namespace fs      = std::filesystem;
+    using Clock       = std::chrono::steady_clock;
+    const auto  start = Clock::now();
+    const auto &dir   = params.output_directory;
     fs::create_directories(dir);
     for (const char *stale : {"monitors.csv", "summary.json"})
       fs::remove(fs::path(dir) / stale);
     for (const auto &entry : fs::directory_iterator(dir))
-      if (entry.path().extension() == ".vtu" ||
-          entry.path().extension() == ".pvd")
+      if (entry.path().extension() == ".vtu"
+          || entry.path().extension() == ".pvd")
         fs::remove(entry.path());
 
     particle_series = std::make_unique<PvdSeries>(dir, "particles");
@@ -504,16 +495,16 @@ namespace fsgmpm
     monitor_file    = std::make_unique<MonitorFile>(
       dir + "/monitors.csv",
       std::vector<std::string>{"time",
-                               "step",
-                               "dt",
-                               "kinetic_energy",
-                               "strain_energy",
-                               "potential_energy",
-                               "external_work",
-                               "dissipated_energy",
-                               "dr_energy_ratio",
-                               "dr_force_ratio",
-                               "lost_particles"});
+                                  "step",
+                                  "dt",
+                                  "kinetic_energy",
+                                  "strain_energy",
+                                  "potential_energy",
+                                  "external_work",
+                                  "dissipated_energy",
+                                  "dr_energy_ratio",
+                                  "dr_force_ratio",
+                                  "lost_particles"});
     auto write_monitor_row = [&] {
       monitor_file->write_row({time,
                                double(step),
@@ -528,9 +519,9 @@ namespace fsgmpm
                                double(monitors.lost_particles)});
     };
     const bool interval_output = params.output_interval > 0;
-    const bool any_output =
-      (params.write_particles || params.write_grid) &&
-      (interval_output || params.output_every_steps > 0);
+    const bool any_output
+      = (params.write_particles || params.write_grid)
+        && (interval_output || params.output_every_steps > 0);
     write_monitor_row();
     if (any_output)
       write_output();
@@ -542,7 +533,7 @@ namespace fsgmpm
                 << MultithreadInfo::n_threads() << " threads, "
                 << (params.use_musl ? "MUSL" : "USL") << std::endl;
 
-    auto last_progress = Clock::now();
+    auto         last_progress    = Clock::now();
     unsigned int last_output_step = 0;
     bool         running          = true;
     while (running)
@@ -552,38 +543,38 @@ namespace fsgmpm
           break;
         if (step % params.monitor_every_steps == 0 || !running)
           write_monitor_row();
-        const bool output_due =
-          interval_output ? (time >= next_output_time * (1 - 1e-12)) :
-                            (params.output_every_steps > 0 &&
-                             step % params.output_every_steps == 0);
+        const bool output_due = interval_output
+                                  ? (time >= next_output_time * (1 - 1e-12))
+                                  : (params.output_every_steps > 0
+                                     && step % params.output_every_steps == 0);
         if (any_output && (output_due || !running) && last_output_step != step)
           {
             const auto t0 = Clock::now();
             write_output();
-            stage_seconds[output_stage] +=
-              std::chrono::duration<double>(Clock::now() - t0).count();
+            stage_seconds[output_stage]
+              += std::chrono::duration<double>(Clock::now() - t0).count();
             last_output_step = step;
             while (interval_output && next_output_time <= time * (1 + 1e-12))
               next_output_time += params.output_interval;
           }
-        if (!params.quiet &&
-            std::chrono::duration<double>(Clock::now() - last_progress)
-                .count() > 2.)
+        if (!params.quiet
+            && std::chrono::duration<double>(Clock::now() - last_progress)
+                   .count()
+                 > 2.)
           {
             last_progress = Clock::now();
-            const double elapsed =
-              std::chrono::duration<double>(last_progress - start).count();
-            const double eta =
-              elapsed * (params.end_time - time) / std::max(time, 1e-300);
-            std::cout << "  t = " << std::setprecision(4) << time
-                      << " s  step " << step << "  dt = " << dt
-                      << " s  ETA " << std::setprecision(3) << eta << " s"
-                      << std::endl;
+            const double elapsed
+              = std::chrono::duration<double>(last_progress - start).count();
+            const double eta
+              = elapsed * (params.end_time - time) / std::max(time, 1e-300);
+            std::cout << "  t = " << std::setprecision(4) << time << " s  step "
+                      << step << "  dt = " << dt << " s  ETA "
+                      << std::setprecision(3) << eta << " s" << std::endl;
           }
       }
 
-    const double wall =
-      std::chrono::duration<double>(Clock::now() - start).count();
+    const double wall
+      = std::chrono::duration<double>(Clock::now() - start).count();
     monitor_file.reset();
     write_summary(wall);
     if (!params.quiet)
@@ -593,8 +584,7 @@ namespace fsgmpm
                   << " s in " << std::setprecision(3) << wall << " s wall, "
                   << std::setprecision(3) << particle_updates / wall
                   << " particle-updates/s, " << monitors.lost_particles
-                  << " lost particles; output in " << dir << "/"
-                  << std::endl;
+                  << " lost particles; output in " << dir << "/" << std::endl;
       }
     if (termination == "unstable" || termination == "error")
       std::cerr << "fsgmpm: " << diagnosis << std::endl;
@@ -609,26 +599,26 @@ namespace fsgmpm
   {
     std::string stages = "{";
     for (unsigned int s = 0; s < n_stages; ++s)
-      stages += (s ? ", " : "") + json_string(stage_names()[s]) + ": " +
-                json_number(stage_seconds[s]);
+      stages += (s ? ", " : "") + json_string(stage_names()[s]) + ": "
+                + json_number(stage_seconds[s]);
     stages += "}";
-    std::vector<std::pair<std::string, std::string>> entries = {
-      {"dim", std::to_string(dim)},
-      {"particles", std::to_string(particles.size())},
-      {"steps", std::to_string(step)},
-      {"simulated_time", json_number(time)},
-      {"wall_seconds", json_number(wall)},
-      {"particle_updates_per_second", json_number(particle_updates / wall)},
-      {"stage_seconds", stages},
-      {"threads", std::to_string(MultithreadInfo::n_threads())},
-      {"mpi_ranks", "1"},
-      {"lost_particles", std::to_string(monitors.lost_particles)},
-      {"dt_min", json_number(dt_min)},
-      {"dt_max", json_number(dt_max)},
-      {"termination", json_string(termination)},
-      {"diagnosis", json_string(diagnosis)},
-      {"bytes_per_particle", json_number(particles.bytes_per_particle())},
-      {"version", json_string(FSGMPM_VERSION)}};
+    std::vector<std::pair<std::string, std::string>> entries
+      = {{"dim", std::to_string(dim)},
+         {"particles", std::to_string(particles.size())},
+         {"steps", std::to_string(step)},
+         {"simulated_time", json_number(time)},
+         {"wall_seconds", json_number(wall)},
+         {"particle_updates_per_second", json_number(particle_updates / wall)},
+         {"stage_seconds", stages},
+         {"threads", std::to_string(MultithreadInfo::n_threads())},
+         {"mpi_ranks", "1"},
+         {"lost_particles", std::to_string(monitors.lost_particles)},
+         {"dt_min", json_number(dt_min)},
+         {"dt_max", json_number(dt_max)},
+         {"termination", json_string(termination)},
+         {"diagnosis", json_string(diagnosis)},
+         {"bytes_per_particle", json_number(particles.bytes_per_particle())},
+         {"version", json_string(FSGMPM_VERSION)}};
     write_json(params.output_directory + "/summary.json", entries);
   }
 
@@ -638,15 +628,14 @@ namespace fsgmpm
   {
     if (particles.size() == 0)
       return 0;
-    const double per_cell = sizeof(unsigned int) * 2 * (dim + 1) +
-                            sizeof(double) * (dim + dim * dim +
-                                              dim * (dim + 1) + 2) +
-                            sizeof(types::boundary_id) * (dim + 1) +
-                            sizeof(unsigned int) * 2;
-    const double per_node = sizeof(double) * (1 + 5 * dim + dim) +
-                            2 * sizeof(unsigned int);
-    return (per_cell * grid->n_cells() + per_node * grid->n_nodes()) /
-           particles.size();
+    const double per_cell
+      = sizeof(unsigned int) * 2 * (dim + 1)
+        + sizeof(double) * (dim + dim * dim + dim * (dim + 1) + 2)
+        + sizeof(types::boundary_id) * (dim + 1) + sizeof(unsigned int) * 2;
+    const double per_node
+      = sizeof(double) * (1 + 5 * dim + dim) + 2 * sizeof(unsigned int);
+    return (per_cell * grid->n_cells() + per_node * grid->n_nodes())
+           / particles.size();
   }
 
   template class Simulator<2>;

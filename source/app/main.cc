@@ -29,24 +29,26 @@ namespace
 {
   using namespace dealii;
 
-  const char *usage =
-    "Usage: fsgmpm [scene.prm] [--set \"Section/Sub/Name=value\"]...\n"
-    "       fsgmpm --print-parameters [scene.prm] [--set ...]\n"
-    "       fsgmpm --help | --version\n"
-    "\n"
-    "Runs the scene described by the parameter file (without one, the\n"
-    "built-in default scene: an elastic block dropping onto the ground).\n"
-    "Output (VTU/PVD, monitors.csv, summary.json) goes to Output/Directory.\n"
-    "\n"
-    "  --set \"Path/Name=value\"  override one parameter after reading the\n"
-    "                           file, e.g. --set \"Simulation/End time=0.1\"\n"
-    "  --print-parameters       print every parameter with its current value,\n"
-    "                           default, allowed range and documentation\n"
-    "  --help                   this text\n"
-    "  --version                print the version\n"
-    "\n"
-    "Exit status: 0 finished (end time or converged), 1 bad input or error,\n"
-    "3 the run became unstable (see the diagnosis and summary.json).\n";
+  const char *usage
+    = "Usage: fsgmpm [scene.prm] [--set \"Section/Sub/Name=value\"]...\n"
+      "       fsgmpm --print-parameters [scene.prm] [--set ...]\n"
+      "       fsgmpm --help | --version\n"
+      "\n"
+      "Runs the scene described by the parameter file (without one, the\n"
+      "built-in default scene: an elastic block dropping onto the ground).\n"
+      "Output (VTU/PVD, monitors.csv, summary.json) goes to Output/Directory.\n"
+      "\n"
+      "  --set \"Path/Name=value\"  override one parameter after reading the\n"
+      "                           file, e.g. --set \"Simulation/End "
+      "time=0.1\"\n"
+      "  --print-parameters       print every parameter with its current "
+      "value,\n"
+      "                           default, allowed range and documentation\n"
+      "  --help                   this text\n"
+      "  --version                print the version\n"
+      "\n"
+      "Exit status: 0 finished (end time or converged), 1 bad input or error,\n"
+      "3 the run became unstable (see the diagnosis and summary.json).\n";
 
   /// Apply one --set override; errors name the full path.
   void
@@ -54,10 +56,10 @@ namespace
   {
     const auto eq = arg.find('=');
     AssertThrow(eq != std::string::npos && eq > 0,
-                ExcMessage("--set needs \"Section/Sub/Name=value\"; got <" +
-                           arg + ">."));
-    const std::string path  = Utilities::trim(arg.substr(0, eq));
-    const std::string value = Utilities::trim(arg.substr(eq + 1));
+                ExcMessage("--set needs \"Section/Sub/Name=value\"; got <" + arg
+                           + ">."));
+    const std::string        path  = Utilities::trim(arg.substr(0, eq));
+    const std::string        value = Utilities::trim(arg.substr(eq + 1));
     std::vector<std::string> parts = Utilities::split_string_list(path, '/');
     const std::string        name  = parts.back();
     parts.pop_back();
@@ -68,9 +70,9 @@ namespace
     catch (...)
       {
         AssertThrow(false,
-                    ExcMessage("--set: there is no parameter <" + path +
-                               ">. Run fsgmpm --print-parameters for the "
-                               "full list."));
+                    ExcMessage("--set: there is no parameter <" + path
+                               + ">. Run fsgmpm --print-parameters for the "
+                                 "full list."));
       }
     for (const auto &s : parts)
       prm.enter_subsection(s);
@@ -85,8 +87,8 @@ namespace
         std::ostringstream info;
         e.print_info(info);
         AssertThrow(false,
-                    ExcMessage("--set: invalid value <" + value + "> for <" +
-                               path + ">: " + Utilities::trim(info.str())));
+                    ExcMessage("--set: invalid value <" + value + "> for <"
+                               + path + ">: " + Utilities::trim(info.str())));
       }
     for (unsigned int i = 0; i < parts.size(); ++i)
       prm.leave_subsection();
@@ -99,8 +101,8 @@ namespace
   {
     std::string out;
     for (unsigned int i = 0; i < s.size(); ++i)
-      if (s[i] == '_' && i + 2 < s.size() + 0 && std::isxdigit(s[i + 1]) &&
-          std::isxdigit(s[i + 2]))
+      if (s[i] == '_' && i + 2 < s.size() + 0 && std::isxdigit(s[i + 1])
+          && std::isxdigit(s[i + 2]))
         {
           out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
           i += 2;
@@ -118,35 +120,35 @@ namespace
     std::stringstream json;
     prm.print_parameters(json,
                          ParameterHandler::OutputStyle(
-                           ParameterHandler::JSON |
-                           ParameterHandler::KeepDeclarationOrder));
+                           ParameterHandler::JSON
+                           | ParameterHandler::KeepDeclarationOrder));
     boost::property_tree::ptree tree;
     boost::property_tree::read_json(json, tree);
-    std::function<void(const boost::property_tree::ptree &, unsigned int)>
-      print = [&](const boost::property_tree::ptree &node, unsigned int depth) {
-        const std::string indent(2 * depth, ' ');
-        for (const auto &[name, child] : node)
-          {
-            const std::string key = demangle(name);
-            if (child.count("value") == 1)
-              {
-                out << indent << "# "
-                    << child.get<std::string>("documentation") << "\n"
-                    << indent << "# Default: "
-                    << child.get<std::string>("default_value")
-                    << "; allowed: "
-                    << child.get<std::string>("pattern_description") << "\n"
-                    << indent << "set " << key << " = "
-                    << child.get<std::string>("value") << "\n\n";
-              }
-            else
-              {
-                out << indent << "subsection " << key << "\n";
-                print(child, depth + 1);
-                out << indent << "end\n\n";
-              }
-          }
-      };
+    std::function<void(const boost::property_tree::ptree &, unsigned int)> print
+      = [&](const boost::property_tree::ptree &node, unsigned int depth) {
+          const std::string indent(2 * depth, ' ');
+          for (const auto &[name, child] : node)
+            {
+              const std::string key = demangle(name);
+              if (child.count("value") == 1)
+                {
+                  out << indent << "# "
+                      << child.get<std::string>("documentation") << "\n"
+                      << indent << "# Default: "
+                      << child.get<std::string>("default_value")
+                      << "; allowed: "
+                      << child.get<std::string>("pattern_description") << "\n"
+                      << indent << "set " << key << " = "
+                      << child.get<std::string>("value") << "\n\n";
+                }
+              else
+                {
+                  out << indent << "subsection " << key << "\n";
+                  print(child, depth + 1);
+                  out << indent << "end\n\n";
+                }
+            }
+        };
     print(tree, 0);
   }
 
@@ -197,15 +199,15 @@ main(int argc, char **argv)
           else if (arg.rfind("-", 0) == 0)
             {
               AssertThrow(false,
-                          ExcMessage("Unknown option <" + arg +
-                                     ">. Run fsgmpm --help."));
+                          ExcMessage("Unknown option <" + arg
+                                     + ">. Run fsgmpm --help."));
             }
           else
             {
               AssertThrow(prm_file.empty(),
                           ExcMessage("Only one parameter file may be given; "
-                                     "got <" +
-                                     prm_file + "> and <" + arg + ">."));
+                                     "got <"
+                                     + prm_file + "> and <" + arg + ">."));
               prm_file = arg;
             }
         }
@@ -215,8 +217,8 @@ main(int argc, char **argv)
       if (!prm_file.empty())
         {
           AssertThrow(std::filesystem::is_regular_file(prm_file),
-                      ExcMessage("Cannot open the parameter file <" +
-                                 prm_file + ">."));
+                      ExcMessage("Cannot open the parameter file <" + prm_file
+                                 + ">."));
           prm.parse_input(prm_file);
         }
       for (const auto &o : overrides)

@@ -71,25 +71,26 @@ namespace fsgmpm
               }
           }
 
-        // Edge matrix E with columns x_k - x_0; lambda_{1..dim} = E^{-1}(x-x_0).
-        Tensor<2, dim> edges;
+        // Edge matrix E with columns x_k - x_0; lambda_{1..dim} =
+        // E^{-1}(x-x_0).
+        Tensor<2, dim>   edges;
         const Point<dim> x0 = cell->vertex(0);
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int d = 0; d < dim; ++d)
             edges[d][k] = cell->vertex(k + 1)[d] - x0[d];
-        const double det = determinant(edges);
+        const double det   = determinant(edges);
         double       scale = 1;
         for (unsigned int k = 0; k < dim; ++k)
           scale *= (cell->vertex(k + 1) - x0).norm();
         AssertThrow(std::abs(det) > 1e-12 * scale,
-                    ExcMessage("Background-grid cell " + std::to_string(c) +
-                               " near " +
-                               Utilities::to_string(cell->center()[0]) +
-                               " is degenerate (zero volume)."));
+                    ExcMessage("Background-grid cell " + std::to_string(c)
+                               + " near "
+                               + Utilities::to_string(cell->center()[0])
+                               + " is degenerate (zero volume)."));
         const Tensor<2, dim> inv = invert(edges);
 
-        cell_origin[c]   = x0;
-        cell_volume[c]   = std::abs(det) / factorial;
+        cell_origin[c] = x0;
+        cell_volume[c] = std::abs(det) / factorial;
         Tensor<1, dim> grad0;
         for (unsigned int k = 0; k < dim; ++k)
           {
@@ -119,7 +120,8 @@ namespace fsgmpm
                   bool on_face = false;
                   for (unsigned int fv = 0; fv < cell->face(f)->n_vertices();
                        ++fv)
-                    if (cell->face(f)->vertex_index(fv) == cell->vertex_index(v))
+                    if (cell->face(f)->vertex_index(fv)
+                        == cell->vertex_index(v))
                       on_face = true;
                   if (!on_face)
                     opposite = v;
@@ -158,9 +160,9 @@ namespace fsgmpm
             faces.emplace(key, std::make_pair(c, k));
           else
             {
-              const auto [other, other_k]          = it->second;
-              cell_neighbors[c][k]                 = other;
-              cell_neighbors[other][other_k]       = c;
+              const auto [other, other_k]    = it->second;
+              cell_neighbors[c][k]           = other;
+              cell_neighbors[other][other_k] = c;
               faces.erase(it);
             }
         }

@@ -11,10 +11,10 @@ namespace fsgmpm
   parse_wall_conditions(const std::string &text, const std::string &path)
   {
     std::map<types::boundary_id, WallCondition> walls;
-    const std::string help =
-      " Expected a comma-separated list of 'id: type' with type one of "
-      "free, fixed, roller, or 'friction <mu>' (mu >= 0), e.g. "
-      "'0: roller, 2: friction 0.5'.";
+    const std::string                           help
+      = " Expected a comma-separated list of 'id: type' with type one of "
+        "free, fixed, roller, or 'friction <mu>' (mu >= 0), e.g. "
+        "'0: roller, 2: friction 0.5'.";
     for (const std::string &item : Utilities::split_string_list(text, ','))
       {
         const auto parts = Utilities::split_string_list(item, ':');
@@ -26,11 +26,10 @@ namespace fsgmpm
             id = Utilities::string_to_int(parts[0]);
           }
         catch (...)
-          {
-          }
+          {}
         AssertThrow(id >= 0 && id < 255,
-                    ExcMessage(path + ": <" + parts[0] +
-                               "> is not a boundary id (0..254)." + help));
+                    ExcMessage(path + ": <" + parts[0]
+                               + "> is not a boundary id (0..254)." + help));
         std::istringstream in(parts[1]);
         std::string        type;
         in >> type;
@@ -45,21 +44,21 @@ namespace fsgmpm
           {
             w.type = WallType::friction;
             AssertThrow(in >> w.friction && w.friction >= 0,
-                        ExcMessage(path + ": 'friction' for boundary id " +
-                                   parts[0] +
-                                   " needs a coefficient mu >= 0." + help));
+                        ExcMessage(path + ": 'friction' for boundary id "
+                                   + parts[0] + " needs a coefficient mu >= 0."
+                                   + help));
           }
         else
           AssertThrow(false,
-                      ExcMessage(path + ": unknown wall type <" + type +
-                                 ">." + help));
+                      ExcMessage(path + ": unknown wall type <" + type + ">."
+                                 + help));
         std::string rest;
         AssertThrow(!(in >> rest),
-                    ExcMessage(path + ": unexpected <" + rest + "> in <" +
-                               item + ">." + help));
+                    ExcMessage(path + ": unexpected <" + rest + "> in <" + item
+                               + ">." + help));
         AssertThrow(walls.count(id) == 0,
-                    ExcMessage(path + ": boundary id " + parts[0] +
-                               " is given twice."));
+                    ExcMessage(path + ": boundary id " + parts[0]
+                               + " is given twice."));
         walls[id] = w;
       }
     return walls;
@@ -84,8 +83,8 @@ namespace fsgmpm
             if (w == walls.end() || w->second.type == WallType::free)
               continue;
             // Outward normal of the face opposite vertex k.
-            const Tensor<1, dim> n = -grid.shape_gradients[c][k] /
-                                     grid.shape_gradients[c][k].norm();
+            const Tensor<1, dim> n
+              = -grid.shape_gradients[c][k] / grid.shape_gradients[c][k].norm();
             for (unsigned int v = 0; v < dim + 1; ++v)
               if (v != k)
                 node_walls[grid.cell_nodes[c][v]][id] += n;

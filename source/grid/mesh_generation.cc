@@ -23,8 +23,8 @@ namespace fsgmpm
     {
       AssertThrow(subdivisions.size() == dim,
                   ExcMessage("Grid/Subdivisions needs one entry per "
-                             "coordinate direction (" +
-                             std::to_string(dim) + ")."));
+                             "coordinate direction ("
+                             + std::to_string(dim) + ")."));
       for (unsigned int d = 0; d < dim; ++d)
         {
           AssertThrow(upper[d] > lower[d],
@@ -48,15 +48,15 @@ namespace fsgmpm
     {
       std::ifstream in(file_name);
       AssertThrow(in.good(),
-                  ExcMessage("Grid/Mesh file: cannot open the Gmsh file <" +
-                             file_name + ">."));
+                  ExcMessage("Grid/Mesh file: cannot open the Gmsh file <"
+                             + file_name + ">."));
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(triangulation);
       grid_in.read_msh(in);
       AssertThrow(triangulation.all_reference_cells_are_simplex(),
-                  ExcMessage("Grid/Mesh file <" + file_name +
-                             "> must contain only triangles (2D) or "
-                             "tetrahedra (3D)."));
+                  ExcMessage("Grid/Mesh file <" + file_name
+                             + "> must contain only triangles (2D) or "
+                               "tetrahedra (3D)."));
     }
 
 
@@ -68,8 +68,8 @@ namespace fsgmpm
     {
       AssertThrow(thickness > 0,
                   ExcMessage("The extrusion thickness must be positive."));
-      const auto        &v2 = tria_2d.get_vertices();
-      const unsigned int nv = v2.size();
+      const auto           &v2 = tria_2d.get_vertices();
+      const unsigned int    nv = v2.size();
       std::vector<Point<3>> vertices(2 * nv);
       for (unsigned int i = 0; i < nv; ++i)
         {
@@ -90,8 +90,8 @@ namespace fsgmpm
           const unsigned int t0 = nv + t[0], t1 = nv + t[1], t2 = nv + t[2];
           // Each quadrilateral side (i < j) is cut by the diagonal from the
           // bottom of vertex i to the top of vertex j.
-          const std::array<std::array<unsigned int, 4>, 3> tets = {
-            {{{b0, b1, b2, t2}}, {{b0, b1, t1, t2}}, {{b0, t0, t1, t2}}}};
+          const std::array<std::array<unsigned int, 4>, 3> tets
+            = {{{{b0, b1, b2, t2}}, {{b0, b1, t1, t2}}, {{b0, t0, t1, t2}}}};
           for (auto tet : tets)
             {
               Tensor<2, 3> e;
@@ -110,15 +110,16 @@ namespace fsgmpm
       tria_3d.create_triangulation(vertices, cells, SubCellData());
 
       // Boundary ids: lateral faces from the 2D edges, z faces 4 and 5.
-      std::map<std::pair<unsigned int, unsigned int>, types::boundary_id> edge_id;
+      std::map<std::pair<unsigned int, unsigned int>, types::boundary_id>
+        edge_id;
       for (const auto &cell : tria_2d.active_cell_iterators())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             {
               auto a = cell->face(f)->vertex_index(0);
               auto b = cell->face(f)->vertex_index(1);
-              edge_id[{std::min(a, b), std::max(a, b)}] =
-                cell->face(f)->boundary_id();
+              edge_id[{std::min(a, b), std::max(a, b)}]
+                = cell->face(f)->boundary_id();
             }
       for (const auto &cell : tria_3d.active_cell_iterators())
         for (const auto f : cell->face_indices())

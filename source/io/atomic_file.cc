@@ -11,8 +11,8 @@ namespace fsgmpm
   write_file_atomically(const std::string                         &file_name,
                         const std::function<void(std::ostream &)> &write)
   {
-    const std::string tmp =
-      file_name + ".tmp." + std::to_string(static_cast<long>(getpid()));
+    const std::string tmp
+      = file_name + ".tmp." + std::to_string(static_cast<long>(getpid()));
     {
       std::ofstream out(tmp);
       AssertThrow(out.good(),
@@ -23,7 +23,7 @@ namespace fsgmpm
                   dealii::ExcMessage("Writing <" + tmp + "> failed."));
     }
     AssertThrow(std::rename(tmp.c_str(), file_name.c_str()) == 0,
-                dealii::ExcMessage("Cannot rename <" + tmp + "> to <" +
-                                   file_name + ">."));
+                dealii::ExcMessage("Cannot rename <" + tmp + "> to <"
+                                   + file_name + ">."));
   }
 } // namespace fsgmpm

@@ -15,9 +15,9 @@ namespace fsgmpm
                  const NodalFields<dim>    &nodes,
                  const std::string         &file_name)
   {
-    const unsigned int            n = grid.n_nodes();
-    Vector<double>                mass(n);
-    std::vector<Vector<double>>   velocity(dim, Vector<double>(n));
+    const unsigned int          n = grid.n_nodes();
+    Vector<double>              mass(n);
+    std::vector<Vector<double>> velocity(dim, Vector<double>(n));
     for (unsigned int i = 0; i < n; ++i)
       {
         mass[i] = nodes.mass[i];

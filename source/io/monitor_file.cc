@@ -13,8 +13,8 @@ namespace fsgmpm
     , n_columns(columns.size())
   {
     AssertThrow(file != nullptr,
-                dealii::ExcMessage("Cannot open <" + file_name +
-                                   "> for writing."));
+                dealii::ExcMessage("Cannot open <" + file_name
+                                   + "> for writing."));
     std::string header;
     for (unsigned int i = 0; i < columns.size(); ++i)
       header += (i ? "," : "") + columns[i];

@@ -10,7 +10,8 @@ namespace fsgmpm
   {
     // Field layout: velocity (dim), stress xx yy zz xy [xz yz], pressure,
     // mass, volume, material id, body id.
-    constexpr unsigned int n_stress_components(const int dim)
+    constexpr unsigned int
+    n_stress_components(const int dim)
     {
       return dim == 2 ? 4 : 6;
     }
@@ -75,10 +76,11 @@ namespace fsgmpm
                DataComponentInterpretation::DataComponentInterpretation>>
   ParticleOutput<dim>::get_nonscalar_data_ranges() const
   {
-    return {std::make_tuple(0u,
-                            dim - 1u,
-                            std::string("velocity"),
-                            DataComponentInterpretation::component_is_part_of_vector)};
+    return {std::make_tuple(
+      0u,
+      dim - 1u,
+      std::string("velocity"),
+      DataComponentInterpretation::component_is_part_of_vector)};
   }
 
 

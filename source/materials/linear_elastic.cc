@@ -49,13 +49,15 @@ namespace fsgmpm
     const double nu = prm.get_double("Poisson's ratio");
     prm.leave_subsection();
     AssertThrow(E > 0,
-                ExcMessage(path + "/Linear elastic/Young's modulus must be "
-                                  "positive; got " +
-                           std::to_string(E) + "."));
+                ExcMessage(path
+                           + "/Linear elastic/Young's modulus must be "
+                             "positive; got "
+                           + std::to_string(E) + "."));
     AssertThrow(nu > -1 && nu < 0.5,
-                ExcMessage(path + "/Linear elastic/Poisson's ratio must lie "
-                                  "in the open interval (-1, 0.5); got " +
-                           std::to_string(nu) + "."));
+                ExcMessage(path
+                           + "/Linear elastic/Poisson's ratio must lie "
+                             "in the open interval (-1, 0.5); got "
+                           + std::to_string(nu) + "."));
     return std::make_unique<LinearElastic>(E, nu, density);
   }
 
@@ -71,10 +73,12 @@ namespace fsgmpm
       {
         const SymmetricTensor<2, 3> &d   = kin[i].strain_rate;
         const double                 trd = trace(d);
-        const SymmetricTensor<2, 3>  rotated =
-          rotate_stress(stress[i], kin[i].rotation);
-        stress[i] = rotated + dt * (lambda * trd * unit_symmetric_tensor<3>() +
-                                    2 * mu * d - trd * rotated);
+        const SymmetricTensor<2, 3>  rotated
+          = rotate_stress(stress[i], kin[i].rotation);
+        stress[i] = rotated
+                    + dt
+                        * (lambda * trd * unit_symmetric_tensor<3>()
+                           + 2 * mu * d - trd * rotated);
       }
   }
 

@@ -28,7 +28,8 @@ namespace fsgmpm
     {
       if constexpr (dim == 2)
         {
-          const auto m01 = midpoint<2>(s[0], s[1]), m02 = midpoint<2>(s[0], s[2]),
+          const auto m01 = midpoint<2>(s[0], s[1]),
+                     m02 = midpoint<2>(s[0], s[2]),
                      m12 = midpoint<2>(s[1], s[2]);
           return {{{s[0], m01, m02}},
                   {{m01, s[1], m12}},
@@ -37,9 +38,11 @@ namespace fsgmpm
         }
       else
         {
-          const auto x01 = midpoint<3>(s[0], s[1]), x02 = midpoint<3>(s[0], s[2]),
-                     x03 = midpoint<3>(s[0], s[3]), x12 = midpoint<3>(s[1], s[2]),
-                     x13 = midpoint<3>(s[1], s[3]), x23 = midpoint<3>(s[2], s[3]);
+          const auto x01
+            = midpoint<3>(s[0], s[1]),
+            x02 = midpoint<3>(s[0], s[2]), x03 = midpoint<3>(s[0], s[3]),
+            x12 = midpoint<3>(s[1], s[2]), x13 = midpoint<3>(s[1], s[3]),
+            x23 = midpoint<3>(s[2], s[3]);
           return {{{s[0], x01, x02, x03}},
                   {{x01, s[1], x12, x13}},
                   {{x02, x12, s[2], x23}},
@@ -71,12 +74,12 @@ namespace fsgmpm
         simplices.swap(next);
       }
     AssertThrow(simplices.size() == particles_per_cell,
-                ExcMessage("Particles per cell must be a power of " +
-                           std::to_string(1u << dim) + " (1, " +
-                           std::to_string(1u << dim) + ", " +
-                           std::to_string(1u << (2 * dim)) + ", ...) in " +
-                           std::to_string(dim) + "D; got " +
-                           std::to_string(particles_per_cell) + "."));
+                ExcMessage("Particles per cell must be a power of "
+                           + std::to_string(1u << dim) + " (1, "
+                           + std::to_string(1u << dim) + ", "
+                           + std::to_string(1u << (2 * dim)) + ", ...) in "
+                           + std::to_string(dim) + "D; got "
+                           + std::to_string(particles_per_cell) + "."));
     std::vector<std::array<double, dim + 1>> points;
     for (const auto &s : simplices)
       {
@@ -106,18 +109,19 @@ namespace fsgmpm
       {
         // Allow round-off on the mesh boundary.
         const double tol = 1e-9;
-        AssertThrow(grid.find_cell_brute_force(p, tol) !=
-                      BackgroundGrid<dim>::invalid,
-                    ExcMessage("Body " + std::to_string(body_id) + " (" +
-                               shape.description() +
-                               ") reaches outside the background mesh, e.g. "
-                               "at the point (" +
+        AssertThrow(grid.find_cell_brute_force(p, tol)
+                      != BackgroundGrid<dim>::invalid,
+                    ExcMessage("Body " + std::to_string(body_id) + " ("
+                               + shape.description()
+                               + ") reaches outside the background mesh, e.g. "
+                                 "at the point ("
+                               +
                                [&] {
                                  std::ostringstream s;
                                  s << p;
                                  return s.str();
-                               }() +
-                               "). Move the body or enlarge the grid."));
+                               }()
+                               + "). Move the body or enlarge the grid."));
       }
 
     const auto   ref   = reference_particle_points<dim>(particles_per_cell);
@@ -142,10 +146,10 @@ namespace fsgmpm
           }
       }
     AssertThrow(added > 0,
-                ExcMessage("Body " + std::to_string(body_id) + " (" +
-                           shape.description() +
-                           ") contains no material point: it is smaller "
-                           "than the grid resolution or outside the mesh."));
+                ExcMessage("Body " + std::to_string(body_id) + " ("
+                           + shape.description()
+                           + ") contains no material point: it is smaller "
+                             "than the grid resolution or outside the mesh."));
     return added;
   }
 

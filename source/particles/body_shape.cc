@@ -70,8 +70,8 @@ namespace fsgmpm
   {
     double r = 0;
     for (unsigned int d = 0; d < dim; ++d)
-      r += (x[d] - center[d]) * (x[d] - center[d]) /
-           (semi_axes[d] * semi_axes[d]);
+      r += (x[d] - center[d]) * (x[d] - center[d])
+           / (semi_axes[d] * semi_axes[d]);
     return r <= 1.;
   }
 
@@ -117,8 +117,8 @@ namespace fsgmpm
     {
       const double d1 = cross(c, d, a), d2 = cross(c, d, b);
       const double d3 = cross(a, b, c), d4 = cross(a, b, d);
-      return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
-             ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+      return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0))
+             && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
     }
   } // namespace
 
@@ -126,8 +126,7 @@ namespace fsgmpm
     : vertices(v)
   {
     const unsigned int n = vertices.size();
-    AssertThrow(n >= 3,
-                ExcMessage("A polygon needs at least three vertices."));
+    AssertThrow(n >= 3, ExcMessage("A polygon needs at least three vertices."));
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
         {
@@ -138,9 +137,9 @@ namespace fsgmpm
                                           vertices[(i + 1) % n],
                                           vertices[j],
                                           vertices[(j + 1) % n]),
-                      ExcMessage("The polygon intersects itself (edges " +
-                                 std::to_string(i) + " and " +
-                                 std::to_string(j) + ")."));
+                      ExcMessage("The polygon intersects itself (edges "
+                                 + std::to_string(i) + " and "
+                                 + std::to_string(j) + ")."));
         }
   }
 
@@ -152,8 +151,8 @@ namespace fsgmpm
     for (unsigned int i = 0, j = n - 1; i < n; j = i++)
       {
         const Point<2> &a = vertices[i], &b = vertices[j];
-        if ((a[1] > x[1]) != (b[1] > x[1]) &&
-            x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0])
+        if ((a[1] > x[1]) != (b[1] > x[1])
+            && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0])
           in = !in;
       }
     return in;

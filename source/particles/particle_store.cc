@@ -118,15 +118,16 @@ namespace fsgmpm
   {
     if (size() == 0)
       return 0;
-    const double bytes =
-      position.capacity() * sizeof(Point<dim>) +
-      velocity.capacity() * sizeof(Tensor<1, dim>) +
-      stress.capacity() * sizeof(SymmetricTensor<2, 3>) +
-      (mass.capacity() + volume.capacity() + initial_volume.capacity()) *
-        sizeof(double) +
-      cell.capacity() * sizeof(unsigned int) +
-      (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t) +
-      order_scratch.capacity() * sizeof(unsigned int) + value_scratch.capacity();
+    const double bytes
+      = position.capacity() * sizeof(Point<dim>)
+        + velocity.capacity() * sizeof(Tensor<1, dim>)
+        + stress.capacity() * sizeof(SymmetricTensor<2, 3>)
+        + (mass.capacity() + volume.capacity() + initial_volume.capacity())
+            * sizeof(double)
+        + cell.capacity() * sizeof(unsigned int)
+        + (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t)
+        + order_scratch.capacity() * sizeof(unsigned int)
+        + value_scratch.capacity();
     return bytes / size();
   }
 

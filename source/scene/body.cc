@@ -64,12 +64,13 @@ namespace fsgmpm
                           "linear elastic",
                           Patterns::Selection("linear elastic"),
                           "Constitutive model of the body.");
-        prm.declare_entry("Initial stress",
-                          "none",
-                          Patterns::Selection("none|geostatic"),
-                          "none: stress free; geostatic: sigma_yy = -rho g "
-                          "(y_top - y) from the body's top, sigma_xx = sigma_zz "
-                          "= K0 sigma_yy (uses Simulation/Gravity).");
+        prm.declare_entry(
+          "Initial stress",
+          "none",
+          Patterns::Selection("none|geostatic"),
+          "none: stress free; geostatic: sigma_yy = -rho g "
+          "(y_top - y) from the body's top, sigma_xx = sigma_zz "
+          "= K0 sigma_yy (uses Simulation/Gravity).");
         prm.declare_entry("K0",
                           "0.5",
                           Patterns::Double(0),
@@ -99,8 +100,9 @@ namespace fsgmpm
       for (const auto &item : Utilities::split_string_list(text, ';'))
         vertices.emplace_back(parse_vector<2>(item, path));
       AssertThrow(vertices.size() >= 3,
-                  ExcMessage(path + " needs at least three vertices "
-                                    "'x0, y0; x1, y1; x2, y2'."));
+                  ExcMessage(path
+                             + " needs at least three vertices "
+                               "'x0, y0; x1, y1; x2, y2'."));
       return vertices;
     }
   } // namespace
@@ -140,9 +142,9 @@ namespace fsgmpm
                               body.path + "/Polygon vertices"));
             else
               AssertThrow(false,
-                          ExcMessage(body.path +
-                                     "/Shape = polygon is only available "
-                                     "in 2D."));
+                          ExcMessage(body.path
+                                     + "/Shape = polygon is only available "
+                                       "in 2D."));
           }
         body.particles_per_cell = prm.get_integer("Particles per cell");
         {
@@ -150,29 +152,28 @@ namespace fsgmpm
           while (n % (1u << dim) == 0)
             n /= (1u << dim);
           AssertThrow(n == 1,
-                      ExcMessage(body.path + "/Particles per cell must be a "
-                                             "power of " +
-                                 std::to_string(1u << dim) + " in " +
-                                 std::to_string(dim) + "D (1, " +
-                                 std::to_string(1u << dim) + ", " +
-                                 std::to_string(1u << (2 * dim)) +
-                                 ", ...); got " +
-                                 std::to_string(body.particles_per_cell) +
-                                 "."));
+                      ExcMessage(
+                        body.path
+                        + "/Particles per cell must be a "
+                          "power of "
+                        + std::to_string(1u << dim) + " in "
+                        + std::to_string(dim) + "D (1, "
+                        + std::to_string(1u << dim) + ", "
+                        + std::to_string(1u << (2 * dim)) + ", ...); got "
+                        + std::to_string(body.particles_per_cell) + "."));
         }
-        body.density            = prm.get_double("Density");
+        body.density = prm.get_double("Density");
         AssertThrow(body.density > 0,
-                    ExcMessage(body.path + "/Density must be positive; got " +
-                               prm.get("Density") + "."));
-        body.initial_velocity =
-          parse_vector<dim>(prm.get("Initial velocity"),
-                            body.path + "/Initial velocity");
-        body.geostatic = (prm.get("Initial stress") == "geostatic");
-        body.k0        = prm.get_double("K0");
+                    ExcMessage(body.path + "/Density must be positive; got "
+                               + prm.get("Density") + "."));
+        body.initial_velocity
+          = parse_vector<dim>(prm.get("Initial velocity"),
+                              body.path + "/Initial velocity");
+        body.geostatic          = (prm.get("Initial stress") == "geostatic");
+        body.k0                 = prm.get_double("K0");
         const std::string model = prm.get("Material model");
         if (model == "linear elastic")
-          body.material =
-            LinearElastic::create(prm, body.density, body.path);
+          body.material = LinearElastic::create(prm, body.density, body.path);
         prm.leave_subsection();
         bodies.push_back(std::move(body));
       }

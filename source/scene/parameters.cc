@@ -15,8 +15,8 @@ namespace fsgmpm
     // A two-entry value is accepted in 3D with z = 0: y is vertical in 2D
     // and 3D alike, so 2D vectors such as gravity carry over unchanged.
     AssertThrow(items.size() == dim || (dim == 3 && items.size() == 2),
-                ExcMessage(path + " must have " + std::to_string(dim) +
-                           " comma-separated numbers; got <" + text + ">."));
+                ExcMessage(path + " must have " + std::to_string(dim)
+                           + " comma-separated numbers; got <" + text + ">."));
     for (unsigned int d = 0; d < items.size(); ++d)
       {
         try
@@ -26,12 +26,12 @@ namespace fsgmpm
         catch (...)
           {
             AssertThrow(false,
-                        ExcMessage(path + ": <" + items[d] +
-                                   "> is not a number."));
+                        ExcMessage(path + ": <" + items[d]
+                                   + "> is not a number."));
           }
         AssertThrow(std::isfinite(v[d]),
-                    ExcMessage(path + ": <" + items[d] +
-                               "> is not a finite number."));
+                    ExcMessage(path + ": <" + items[d]
+                               + "> is not a finite number."));
       }
     return v;
   }
@@ -244,7 +244,7 @@ namespace fsgmpm
     courant   = prm.get_double("Courant number");
     fixed_dt  = prm.get_double("Fixed time step");
     use_musl  = (prm.get("Update scheme") == "MUSL");
-    gravity = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
+    gravity   = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     gravity_ramp_time   = prm.get_double("Gravity ramp time");
     stop_when_converged = (prm.get("Termination") == "dr_converged");
     n_threads           = prm.get_integer("Number of threads");
@@ -253,8 +253,8 @@ namespace fsgmpm
                 ExcMessage("Simulation/End time must be positive."));
     AssertThrow(courant > 0 && courant <= 1,
                 ExcMessage("Simulation/Courant number must lie in (0, 1]; "
-                           "got " +
-                           std::to_string(courant) + "."));
+                           "got "
+                           + std::to_string(courant) + "."));
 
     prm.enter_subsection("Damping");
     local_damping      = prm.get_double("Local damping coefficient");
@@ -265,8 +265,8 @@ namespace fsgmpm
     prm.leave_subsection();
     AssertThrow(local_damping >= 0 && local_damping < 1,
                 ExcMessage("Damping/Local damping coefficient must lie in "
-                           "[0, 1); got " +
-                           std::to_string(local_damping) + "."));
+                           "[0, 1); got "
+                           + std::to_string(local_damping) + "."));
 
     prm.enter_subsection("Stability");
     ke_growth_factor = prm.get_double("Kinetic energy growth factor");
@@ -284,10 +284,10 @@ namespace fsgmpm
     if (grid_type == "box" || grid_type == "extruded box")
       {
         const unsigned int box_dim = (grid_type == "box") ? dim : 2;
-        const auto         lo =
-          parse_vector<dim>(prm.get("Lower corner"), "Grid/Lower corner");
-        const auto hi =
-          parse_vector<dim>(prm.get("Upper corner"), "Grid/Upper corner");
+        const auto         lo
+          = parse_vector<dim>(prm.get("Lower corner"), "Grid/Lower corner");
+        const auto hi
+          = parse_vector<dim>(prm.get("Upper corner"), "Grid/Upper corner");
         lower_corner = Point<dim>(lo);
         upper_corner = Point<dim>(hi);
         if (box_dim == 2 && dim == 3)
@@ -296,12 +296,12 @@ namespace fsgmpm
           AssertThrow(upper_corner[d] > lower_corner[d],
                       ExcMessage("Grid/Upper corner must exceed Grid/Lower "
                                  "corner in every coordinate."));
-        const auto items =
-          Utilities::split_string_list(prm.get("Subdivisions"), ',');
+        const auto items
+          = Utilities::split_string_list(prm.get("Subdivisions"), ',');
         AssertThrow(items.size() == box_dim,
-                    ExcMessage("Grid/Subdivisions must have " +
-                               std::to_string(box_dim) + " entries; got <" +
-                               prm.get("Subdivisions") + ">."));
+                    ExcMessage("Grid/Subdivisions must have "
+                               + std::to_string(box_dim) + " entries; got <"
+                               + prm.get("Subdivisions") + ">."));
         for (const auto &s : items)
           subdivisions.push_back(Utilities::string_to_int(s));
       }

@@ -28,16 +28,16 @@ namespace fsgmpm
           // back to the particles in Eq. (19).
           const Tensor<1, dim> v_old = nodes.momentum[i] / m;
 
-          const Tensor<1, dim> unbalanced =
-            nodes.external_force[i] - nodes.internal_force[i];
+          const Tensor<1, dim> unbalanced
+            = nodes.external_force[i] - nodes.internal_force[i];
           // Local non-viscous damping: opposes the motion with a fraction of
           // the unbalanced force, component by component.
           Tensor<1, dim> damping;
           if (alpha > 0)
             for (unsigned int d = 0; d < dim; ++d)
               if (v_old[d] != 0)
-                damping[d] = -alpha * std::abs(unbalanced[d]) *
-                             (v_old[d] > 0 ? 1. : -1.);
+                damping[d] = -alpha * std::abs(unbalanced[d])
+                             * (v_old[d] > 0 ? 1. : -1.);
 
           Tensor<1, dim> v_new = v_old + (dt / m) * (unbalanced + damping);
           constraints.apply(i, v_new);

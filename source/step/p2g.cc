@@ -41,15 +41,19 @@ namespace fsgmpm
             const unsigned int n = grid.cell_nodes[c][k];
             nodes.mass[n] += m[k];
             nodes.momentum[n] += mv[k];
-            nodes.internal_force[n] +=
-              volume_stress * grid.shape_gradients[c][k];
+            nodes.internal_force[n]
+              += volume_stress * grid.shape_gradients[c][k];
           }
       });
     }
 
     template void
-    p2g<2>(const BackgroundGrid<2> &, const ParticleStore<2> &, NodalFields<2> &);
+    p2g<2>(const BackgroundGrid<2> &,
+           const ParticleStore<2> &,
+           NodalFields<2> &);
     template void
-    p2g<3>(const BackgroundGrid<3> &, const ParticleStore<3> &, NodalFields<3> &);
+    p2g<3>(const BackgroundGrid<3> &,
+           const ParticleStore<3> &,
+           NodalFields<3> &);
   } // namespace Stages
 } // namespace fsgmpm

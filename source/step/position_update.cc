@@ -30,8 +30,8 @@ namespace fsgmpm
                    p < particles.cell_start[c + 1];
                    ++p)
                 {
-                  const auto lambda =
-                    grid.barycentric(c, particles.position[p]);
+                  const auto lambda
+                    = grid.barycentric(c, particles.position[p]);
                   Tensor<1, dim> dx;
                   for (unsigned int k = 0; k < dim + 1; ++k)
                     dx += lambda[k] * v[k];

@@ -12,11 +12,12 @@ namespace fsgmpm
     {
       const PointLocator<dim> locator(grid);
       const unsigned int      n = particles.size();
-      CellLoops::parallel_range(n, [&](const unsigned int b, const unsigned int e) {
-        for (unsigned int p = b; p < e; ++p)
-          particles.cell[p] =
-            locator.locate(particles.position[p], particles.cell[p]);
-      });
+      CellLoops::parallel_range(
+        n, [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int p = b; p < e; ++p)
+            particles.cell[p]
+              = locator.locate(particles.position[p], particles.cell[p]);
+        });
 
       unsigned int lost = 0;
       for (unsigned int p = 0; p < n; ++p)
@@ -55,13 +56,14 @@ namespace fsgmpm
                    ++p)
                 {
                   const double rho = particles.mass[p] / particles.volume[p];
-                  speed            = std::max(
-                    speed,
-                    materials[particles.material_id[p]]->wave_speed(rho) +
-                      particles.velocity[p].norm());
+                  speed
+                    = std::max(speed,
+                               materials[particles.material_id[p]]->wave_speed(
+                                 rho)
+                                 + particles.velocity[p].norm());
                 }
-              cell_dt[i] = (speed > 0) ? grid.cell_min_altitude[c] / speed :
-                                         std::numeric_limits<double>::max();
+              cell_dt[i] = (speed > 0) ? grid.cell_min_altitude[c] / speed
+                                       : std::numeric_limits<double>::max();
             }
         },
         16);

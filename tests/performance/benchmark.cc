@@ -100,12 +100,12 @@ end
   baseline_updates_per_second(const Simulator<dim> &sim,
                               const unsigned int    steps)
   {
-    const auto          &grid = sim.get_grid();
-    const auto          &tria = grid.get_triangulation();
-    const auto          &dofh = grid.get_dof_handler();
-    const auto          &fe   = dofh.get_fe();
-    const MappingFE<dim> mapping(FE_SimplexP<dim>(1));
-    const unsigned int   n_props = 2 + dim + dim * dim;
+    const auto                     &grid = sim.get_grid();
+    const auto                     &tria = grid.get_triangulation();
+    const auto                     &dofh = grid.get_dof_handler();
+    const auto                     &fe   = dofh.get_fe();
+    const MappingFE<dim>            mapping(FE_SimplexP<dim>(1));
+    const unsigned int              n_props = 2 + dim + dim * dim;
     Particles::ParticleHandler<dim> handler(tria, mapping, n_props);
 
     // Insert the simulator's points with their known cells.
@@ -133,9 +133,9 @@ end
     std::vector<double>         mass(n);
     std::vector<Tensor<1, dim>> momentum(n), force(n), velocity(n), accel(n);
     Tensor<1, dim>              gravity;
-    gravity[1]         = -9.81;
-    const double dt    = 1e-5;
-    const double lame  = 0, mu = 0.5e6 / 1.3; // stress update cost only
+    gravity[1]        = -9.81;
+    const double dt   = 1e-5;
+    const double lame = 0, mu = 0.5e6 / 1.3; // stress update cost only
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
 
     const auto t0 = Clock::now();
@@ -174,8 +174,8 @@ end
                     const double N = fev.shape_value(i, q);
                     mass[dofs[i]] += N * pr[0];
                     momentum[dofs[i]] += N * pr[0] * v;
-                    force[dofs[i]] += N * pr[0] * gravity -
-                                      pr[1] * s * fev.shape_grad(i, q);
+                    force[dofs[i]]
+                      += N * pr[0] * gravity - pr[1] * s * fev.shape_grad(i, q);
                   }
                 ++q;
               }
@@ -219,8 +219,10 @@ end
                   pr[2 + d] += dt * a[d];
                 const Tensor<2, dim> eps = 0.5 * (L + transpose(L));
                 for (unsigned int d = 0; d < dim * dim; ++d)
-                  pr[2 + dim + d] += dt * (2 * mu * eps[d / dim][d % dim] +
-                                           (d / dim == d % dim ? lame * trace(eps) : 0.));
+                  pr[2 + dim + d]
+                    += dt
+                       * (2 * mu * eps[d / dim][d % dim]
+                          + (d / dim == d % dim ? lame * trace(eps) : 0.));
                 p.set_location(p.get_location() + dt * v);
                 ++q;
               }
@@ -234,8 +236,8 @@ end
   void
   run_case(const std::string &name, const unsigned int steps)
   {
-    auto           prm = test_tools::make_parameters(scene<dim>());
-    Simulator<dim> sim(*prm);
+    auto               prm = test_tools::make_parameters(scene<dim>());
+    Simulator<dim>     sim(*prm);
     const unsigned int n = sim.get_particles().size();
     // One warm-up step, then the timed steps.
     sim.advance();
@@ -245,12 +247,14 @@ end
       AssertThrow(sim.advance(), ExcMessage("benchmark run stopped early"));
     const double wall = seconds_since(t0);
     const double ups  = double(n) * steps / wall;
-    const double bpp  = sim.get_particles().bytes_per_particle() +
-                       sim.get_grid_memory_per_particle();
-    const double baseline = baseline_updates_per_second(sim, std::max(2u, steps / 5));
+    const double bpp  = sim.get_particles().bytes_per_particle()
+                       + sim.get_grid_memory_per_particle();
+    const double baseline
+      = baseline_updates_per_second(sim, std::max(2u, steps / 5));
     std::cout << "BENCH " << name << " dim=" << dim << " particles=" << n
-              << " steps=" << steps << " updates_per_second=" << std::setprecision(4)
-              << ups << " bytes_per_particle=" << std::setprecision(4) << bpp
+              << " steps=" << steps
+              << " updates_per_second=" << std::setprecision(4) << ups
+              << " bytes_per_particle=" << std::setprecision(4) << bpp
               << " baseline_updates_per_second=" << baseline
               << " speedup=" << ups / baseline
               << " threads=" << MultithreadInfo::n_threads() << std::endl;

@@ -18,11 +18,11 @@ using namespace fsgmpm;
 
 namespace
 {
-void
-check_column(const std::string &damping, const std::string &label)
-{
-  const double H = 1.0, rho = 1000, g = 9.81, nu = 0.3, h = 0.05;
-  auto         prm = test_tools::make_parameters(damping + R"(
+  void
+  check_column(const std::string &damping, const std::string &label)
+  {
+    const double H = 1.0, rho = 1000, g = 9.81, nu = 0.3, h = 0.05;
+    auto         prm = test_tools::make_parameters(damping + R"(
 subsection Simulation
   set End time = 20
   set Gravity = 0, -9.81
@@ -47,84 +47,84 @@ subsection Bodies
   end
 end
 )");
-  Simulator<2> sim(*prm);
-  auto        &particles = sim.get_particles();
-  while (sim.advance())
-    {
-    }
-  ASSERT_EQ(sim.get_termination(), "dr_converged") << sim.get_diagnosis();
-  const auto &m = sim.get_monitors();
-  EXPECT_LE(m.dr_energy_ratio, 1e-3);
-  EXPECT_LE(m.dr_force_ratio, 1e-3);
+    Simulator<2> sim(*prm);
+    auto        &particles = sim.get_particles();
+    while (sim.advance())
+      {}
+    ASSERT_EQ(sim.get_termination(), "dr_converged") << sim.get_diagnosis();
+    const auto &m = sim.get_monitors();
+    EXPECT_LE(m.dr_energy_ratio, 1e-3);
+    EXPECT_LE(m.dr_force_ratio, 1e-3);
 
-  // The reference sigma_yy at a point is the weight per unit width of the
-  // material above it, g * (mass above) / width: exact for any deformation
-  // of this uniaxial state. Points keep their order in y, so sorting by
-  // height gives the mass above each row of points.
-  std::vector<unsigned int> order(particles.size());
-  for (unsigned int p = 0; p < order.size(); ++p)
-    order[p] = p;
-  std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-    return particles.position[a][1] > particles.position[b][1];
-  });
+    // The reference sigma_yy at a point is the weight per unit width of the
+    // material above it, g * (mass above) / width: exact for any deformation
+    // of this uniaxial state. Points keep their order in y, so sorting by
+    // height gives the mass above each row of points.
+    std::vector<unsigned int> order(particles.size());
+    for (unsigned int p = 0; p < order.size(); ++p)
+      order[p] = p;
+    std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+      return particles.position[a][1] > particles.position[b][1];
+    });
 
-  struct CellMean
-  {
-    double sxx = 0, syy = 0, szz = 0, ref = 0;
-    int    n   = 0;
-  };
-  std::map<unsigned int, CellMean> cells;
-  const double width = 0.2, ratio = nu / (1 - nu);
-  // Mass above each point (per unit width) -> reference sigma_yy.
-  double mass_above = 0;
-  for (unsigned int i = 0; i < order.size();)
+    struct CellMean
     {
-      // Points at the same height (a row of the particle lattice) share the
-      // same reference: mass above the row plus half the row's own mass.
-      unsigned int j    = i;
-      double       mrow = 0;
-      while (j < order.size() &&
-             std::abs(particles.position[order[j]][1] -
-                      particles.position[order[i]][1]) < 1e-9)
-        mrow += particles.mass[order[j++]];
-      const double syy_ref = -g * (mass_above + 0.5 * mrow) / width;
-      for (unsigned int k = i; k < j; ++k)
-        {
-          const unsigned int p  = order[k];
-          const double       y  = particles.position[p][1];
-          if (y < h || y > H - h)
-            continue;
-          // Linear triangles give one constant stress per layer of squares
-          // (both triangles of a square alike), so compare layer means.
-          auto &cm = cells[static_cast<unsigned int>(y / h)];
-          cm.sxx += particles.stress[p][0][0];
-          cm.syy += particles.stress[p][1][1];
-          cm.szz += particles.stress[p][2][2];
-          cm.ref += syy_ref;
-          ++cm.n;
-        }
-      mass_above += mrow;
-      i = j;
-    }
-  ASSERT_EQ(cells.size(), 18u);
-  double worst_syy = 0, worst_ratio = 0;
-  for (const auto &[c, cm] : cells)
-    {
-      const double syy = cm.syy / cm.n, ref = cm.ref / cm.n;
-      worst_syy        = std::max(worst_syy, std::abs(syy / ref - 1));
-      worst_ratio      = std::max({worst_ratio,
-                              std::abs(cm.sxx / cm.syy / ratio - 1),
-                              std::abs(cm.szz / cm.syy / ratio - 1)});
-    }
-  std::cout << "[ measured ] column, " << label << ": " << sim.get_step()
-            << " steps to Eq. (30) at 1e-3, worst layer sigma_yy error "
-            << 100 * worst_syy << " %, worst lateral ratio error "
-            << 100 * worst_ratio << " % (" << cells.size() << " layers, "
-            << "bottom stress reference " << rho * g * H << " Pa)"
-            << std::endl;
-  EXPECT_LT(worst_syy, 0.03);
-  EXPECT_LT(worst_ratio, 0.03);
-}
+      double sxx = 0, syy = 0, szz = 0, ref = 0;
+      int    n = 0;
+    };
+    std::map<unsigned int, CellMean> cells;
+    const double                     width = 0.2, ratio = nu / (1 - nu);
+    // Mass above each point (per unit width) -> reference sigma_yy.
+    double mass_above = 0;
+    for (unsigned int i = 0; i < order.size();)
+      {
+        // Points at the same height (a row of the particle lattice) share the
+        // same reference: mass above the row plus half the row's own mass.
+        unsigned int j    = i;
+        double       mrow = 0;
+        while (j < order.size()
+               && std::abs(particles.position[order[j]][1]
+                           - particles.position[order[i]][1])
+                    < 1e-9)
+          mrow += particles.mass[order[j++]];
+        const double syy_ref = -g * (mass_above + 0.5 * mrow) / width;
+        for (unsigned int k = i; k < j; ++k)
+          {
+            const unsigned int p = order[k];
+            const double       y = particles.position[p][1];
+            if (y < h || y > H - h)
+              continue;
+            // Linear triangles give one constant stress per layer of squares
+            // (both triangles of a square alike), so compare layer means.
+            auto &cm = cells[static_cast<unsigned int>(y / h)];
+            cm.sxx += particles.stress[p][0][0];
+            cm.syy += particles.stress[p][1][1];
+            cm.szz += particles.stress[p][2][2];
+            cm.ref += syy_ref;
+            ++cm.n;
+          }
+        mass_above += mrow;
+        i = j;
+      }
+    ASSERT_EQ(cells.size(), 18u);
+    double worst_syy = 0, worst_ratio = 0;
+    for (const auto &[c, cm] : cells)
+      {
+        const double syy = cm.syy / cm.n, ref = cm.ref / cm.n;
+        worst_syy   = std::max(worst_syy, std::abs(syy / ref - 1));
+        worst_ratio = std::max({worst_ratio,
+                                std::abs(cm.sxx / cm.syy / ratio - 1),
+                                std::abs(cm.szz / cm.syy / ratio - 1)});
+      }
+    std::cout << "[ measured ] column, " << label << ": " << sim.get_step()
+              << " steps to Eq. (30) at 1e-3, worst layer sigma_yy error "
+              << 100 * worst_syy << " %, worst lateral ratio error "
+              << 100 * worst_ratio << " % (" << cells.size() << " layers, "
+              << "bottom stress reference " << rho * g * H << " Pa)"
+              << std::endl;
+    EXPECT_LT(worst_syy, 0.03);
+    EXPECT_LT(worst_ratio, 0.03);
+  }
 } // namespace
 
 TEST(ElasticColumnSelfWeight, LocalDamping)

@@ -61,10 +61,10 @@ end
     }
   ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
   const double slope = (n * stv - st * sv) / (n * stt - st * st);
-  std::cout << "[ measured ] deceleration " << -slope << " m/s^2 (mu g = "
-            << mu * g << ", error " << 100 * (-slope / (mu * g) - 1)
-            << " %), velocity at t = 0.45 s: " << v_end << " m/s"
-            << std::endl;
+  std::cout << "[ measured ] deceleration " << -slope
+            << " m/s^2 (mu g = " << mu * g << ", error "
+            << 100 * (-slope / (mu * g) - 1)
+            << " %), velocity at t = 0.45 s: " << v_end << " m/s" << std::endl;
   EXPECT_NEAR(-slope / (mu * g), 1.0, 0.05);
   EXPECT_LT(std::abs(v_end), 0.02 * v0);
 }

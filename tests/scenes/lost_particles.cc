@@ -19,8 +19,8 @@ namespace
     return R"(
 subsection Simulation
   set Gravity = 0, 0
-  set End time = )" +
-           std::to_string(end_time) + R"(
+  set End time = )"
+           + std::to_string(end_time) + R"(
 end
 subsection Grid
   set Upper corner = 1, 0.5
@@ -40,7 +40,7 @@ end
 
 TEST(LostParticles, CountedExactly)
 {
-  const double T   = 0.04, v = 2.0;
+  const double T = 0.04, v = 2.0;
   auto         prm = test_tools::make_parameters(scene(T));
   Simulator<2> sim(*prm);
   unsigned int expected = 0;
@@ -48,8 +48,7 @@ TEST(LostParticles, CountedExactly)
     expected += (x[0] + v * T > 1.0 + 1e-12);
   const unsigned int n0 = sim.get_particles().size();
   while (sim.advance())
-    {
-    }
+    {}
   EXPECT_EQ(sim.get_termination(), "end_time");
   std::cout << "[ measured ] lost " << sim.get_monitors().lost_particles
             << " of " << n0 << " points, expected " << expected << std::endl;
@@ -60,12 +59,11 @@ TEST(LostParticles, CountedExactly)
 
 TEST(LostParticles, AllLostEndsWithError)
 {
-  auto         prm = test_tools::make_parameters(scene(1.0));
-  Simulator<2> sim(*prm);
+  auto               prm = test_tools::make_parameters(scene(1.0));
+  Simulator<2>       sim(*prm);
   const unsigned int n0 = sim.get_particles().size();
   while (sim.advance())
-    {
-    }
+    {}
   EXPECT_EQ(sim.get_termination(), "error");
   EXPECT_EQ(sim.get_monitors().lost_particles, n0);
   EXPECT_NE(sim.get_diagnosis().find("no material point"), std::string::npos);

@@ -31,11 +31,12 @@ namespace
   scene(const bool damped)
   {
     std::string prm = "subsection Simulation\n"
-                      "  set Dimension = " + std::to_string(dim) + "\n" +
-                      (damped ? "  set End time = 10\n"
-                                "  set Termination = dr_converged\n" :
-                                "  set End time = 0.045\n") +
-                      "end\n";
+                      "  set Dimension = "
+                      + std::to_string(dim) + "\n"
+                      + (damped ? "  set End time = 10\n"
+                                  "  set Termination = dr_converged\n"
+                                : "  set End time = 0.045\n")
+                      + "end\n";
     if (damped)
       prm += "subsection Damping\n  set Local damping coefficient = 0.5\n"
              "  set Energy tolerance = 1e-3\n  set Force tolerance = 1e-3\n"
@@ -44,16 +45,16 @@ namespace
            "  set Lower corner = 0, 0\n  set Upper corner = 0.4, 0.6\n"
            "  set Subdivisions = 8, 12\n";
     if (dim == 3)
-      prm += "  set Type = extruded box\n  set Extrusion thickness = " +
-             std::to_string(thickness) +
-             "\n  set Boundary conditions = 2: fixed, 4: roller, 5: roller\n";
+      prm += "  set Type = extruded box\n  set Extrusion thickness = "
+             + std::to_string(thickness)
+             + "\n  set Boundary conditions = 2: fixed, 4: roller, 5: roller\n";
     else
       prm += "  set Boundary conditions = 2: fixed\n";
     prm += "end\nsubsection Bodies\n subsection Body 0\n";
     if (dim == 3)
       prm += "  set Box lower corner = 0.1, 0, 0\n"
-             "  set Box upper corner = 0.3, 0.4, " + std::to_string(thickness) +
-             "\n  set Particles per cell = 8\n";
+             "  set Box upper corner = 0.3, 0.4, "
+             + std::to_string(thickness) + "\n  set Particles per cell = 8\n";
     else
       prm += "  set Box lower corner = 0.1, 0\n"
              "  set Box upper corner = 0.3, 0.4\n"
@@ -90,8 +91,8 @@ namespace
     for (const unsigned int i : nodes.active_nodes)
       if (sim.get_grid().node_positions[i][1] < 1e-12)
         {
-          const Tensor<1, dim> ri =
-            nodes.internal_force[i] - nodes.external_force[i];
+          const Tensor<1, dim> ri
+            = nodes.internal_force[i] - nodes.external_force[i];
           r += ri;
           x_abs += std::abs(ri[0]);
         }
@@ -125,8 +126,8 @@ namespace
               t_peak                  = sim.get_time();
             }
           double xa;
-          r.peak_reaction =
-            std::max(r.peak_reaction, base_reaction(sim, xa)[1] / scale);
+          r.peak_reaction
+            = std::max(r.peak_reaction, base_reaction(sim, xa)[1] / scale);
         }
       EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
       r.period = 2 * t_peak;
@@ -143,8 +144,7 @@ namespace
         n_top += (x[1] > ymax - 1e-9);
       const double y_top0 = top_height(particles, n_top);
       while (sim.advance())
-        {
-        }
+        {}
       EXPECT_EQ(sim.get_termination(), "dr_converged") << sim.get_diagnosis();
       r.static_top_displacement = y_top0 - top_height(particles, n_top);
       double xa;
@@ -159,22 +159,26 @@ namespace
 
 TEST(PlaneStrainVersusSlab, ExtrudedMeshAgrees)
 {
-  const Result r2 = run<2>(1.0);
-  const Result r3 = run<3>(thickness);
+  const Result r2     = run<2>(1.0);
+  const Result r3     = run<3>(thickness);
   const double weight = 1000 * 9.81 * 0.2 * 0.4;
   auto         report = [](const char *name, double a, double b) {
     std::cout << "[ measured ] " << name << ": 2D " << a << ", 3D slab " << b
               << ", difference " << 100 * (b / a - 1) << " %" << std::endl;
   };
   report("first period (s)", r2.period, r3.period);
-  report("peak top displacement (m)", r2.peak_top_displacement,
+  report("peak top displacement (m)",
+         r2.peak_top_displacement,
          r3.peak_top_displacement);
-  report("peak vertical base reaction (N/m)", r2.peak_reaction,
+  report("peak vertical base reaction (N/m)",
+         r2.peak_reaction,
          r3.peak_reaction);
-  report("static top displacement (m)", r2.static_top_displacement,
+  report("static top displacement (m)",
+         r2.static_top_displacement,
          r3.static_top_displacement);
   report("static vertical base reaction (N/m)", r2.reaction_y, r3.reaction_y);
-  report("static horizontal base reaction sum|Rx| (N/m)", r2.reaction_x_abs,
+  report("static horizontal base reaction sum|Rx| (N/m)",
+         r2.reaction_x_abs,
          r3.reaction_x_abs);
   std::cout << "[ measured ] weight " << weight << " N/m; 2D " << r2.particles
             << " points, 3D " << r3.particles << " points" << std::endl;

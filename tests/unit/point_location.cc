@@ -72,8 +72,9 @@ namespace
             points.push_back(grid.node_positions[grid.cell_nodes[c][a]]);
             for (unsigned int b = a + 1; b < dim + 1; ++b)
               points.push_back(
-                0.5 * (grid.node_positions[grid.cell_nodes[c][a]] +
-                       grid.node_positions[grid.cell_nodes[c][b]]));
+                0.5
+                * (grid.node_positions[grid.cell_nodes[c][a]]
+                   + grid.node_positions[grid.cell_nodes[c][b]]));
             // Centroid of the face opposite a.
             Point<dim> f;
             for (unsigned int b = 0; b < dim + 1; ++b)
@@ -99,10 +100,10 @@ namespace
   void
   check_grid(const BackgroundGrid<dim> &grid, const std::string &what)
   {
-    std::mt19937                              rng(42);
-    std::uniform_int_distribution<unsigned>   any_cell(0, grid.n_cells() - 1);
-    const PointLocator<dim>                   locator(grid, tolerance);
-    unsigned int n_inside = 0, n_outside = 0;
+    std::mt19937                            rng(42);
+    std::uniform_int_distribution<unsigned> any_cell(0, grid.n_cells() - 1);
+    const PointLocator<dim>                 locator(grid, tolerance);
+    unsigned int                            n_inside = 0, n_outside = 0;
     for (const auto &x : test_points(grid, rng))
       {
         // Start the walk both from a random (usually distant) cell and from
@@ -136,8 +137,8 @@ namespace
       [](const Point<dim> &p) {
         Point<dim> q = p;
         for (unsigned int d = 0; d < dim; ++d)
-          q[d] += 0.04 * std::sin(3. * p[(d + 1) % dim] + 1.) *
-                  p[d] * (1. - p[d]);
+          q[d]
+            += 0.04 * std::sin(3. * p[(d + 1) % dim] + 1.) * p[d] * (1. - p[d]);
         return q;
       },
       tria);
@@ -156,7 +157,10 @@ TEST(PointLocation, Structured2D)
 TEST(PointLocation, Structured3D)
 {
   Triangulation<3> tria;
-  MeshGeneration::make_box(Point<3>(0, 0, 0), Point<3>(1, 1, 1), {3, 3, 3}, tria);
+  MeshGeneration::make_box(Point<3>(0, 0, 0),
+                           Point<3>(1, 1, 1),
+                           {3, 3, 3},
+                           tria);
   check_grid(BackgroundGrid<3>(std::move(tria)), "structured 3D");
 }
 
@@ -171,7 +175,10 @@ TEST(PointLocation, Distorted2D)
 TEST(PointLocation, Distorted3D)
 {
   Triangulation<3> tria;
-  MeshGeneration::make_box(Point<3>(0, 0, 0), Point<3>(1, 1, 1), {3, 3, 3}, tria);
+  MeshGeneration::make_box(Point<3>(0, 0, 0),
+                           Point<3>(1, 1, 1),
+                           {3, 3, 3},
+                           tria);
   distort(tria);
   check_grid(BackgroundGrid<3>(std::move(tria)), "distorted 3D");
 }
@@ -206,14 +213,15 @@ TEST(PointLocation, SlowRotationWalk)
 {
   Triangulation<2> tria;
   MeshGeneration::make_box(Point<2>(0, 0), Point<2>(1, 1), {32, 32}, tria);
-  const BackgroundGrid<2> grid(std::move(tria));
-  const PointLocator<2>   locator(grid, tolerance);
+  const BackgroundGrid<2>   grid(std::move(tria));
+  const PointLocator<2>     locator(grid, tolerance);
   std::vector<Point<2>>     x;
   std::vector<unsigned int> cell;
   for (unsigned int i = 0; i < 96; ++i)
     for (unsigned int j = 0; j < 96; ++j)
       {
-        const Point<2> p(0.2 + 0.6 * (i + 0.5) / 96, 0.2 + 0.6 * (j + 0.5) / 96);
+        const Point<2> p(0.2 + 0.6 * (i + 0.5) / 96,
+                         0.2 + 0.6 * (j + 0.5) / 96);
         x.push_back(p);
         cell.push_back(grid.find_cell_brute_force(p, tolerance));
       }
@@ -224,11 +232,12 @@ TEST(PointLocation, SlowRotationWalk)
     for (unsigned int p = 0; p < x.size(); ++p)
       {
         const Tensor<1, 2> r = x[p] - centre;
-        x[p] = centre + Point<2>(std::cos(angle) * r[0] - std::sin(angle) * r[1],
-                                 std::sin(angle) * r[0] + std::cos(angle) * r[1]);
+        x[p]                 = centre
+               + Point<2>(std::cos(angle) * r[0] - std::sin(angle) * r[1],
+                          std::sin(angle) * r[0] + std::cos(angle) * r[1]);
         cell[p] = locator.locate(x[p], cell[p]);
-        if (cell[p] == BackgroundGrid<2>::invalid ||
-            min_barycentric(grid, cell[p], x[p]) < -tolerance)
+        if (cell[p] == BackgroundGrid<2>::invalid
+            || min_barycentric(grid, cell[p], x[p]) < -tolerance)
           ++wrong;
       }
   EXPECT_EQ(wrong, 0u);

@@ -137,9 +137,9 @@ namespace fsgmpm
     std::vector<unsigned int>              cell_colour;
 
   private:
-    Triangulation<dim>  triangulation;
-    FE_SimplexP<dim>    fe;
-    DoFHandler<dim>     dof_handler;
+    Triangulation<dim> triangulation;
+    FE_SimplexP<dim>   fe;
+    DoFHandler<dim>    dof_handler;
 
     void
     compute_cell_data();

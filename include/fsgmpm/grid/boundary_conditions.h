@@ -17,10 +17,10 @@ namespace fsgmpm
   /// The kind of wall a boundary id stands for.
   enum class WallType
   {
-    free,     ///< no constraint
-    fixed,    ///< all velocity components zero (no slip)
-    roller,   ///< normal velocity zero, tangential free (bilateral slip)
-    friction  ///< unilateral contact with Coulomb friction coefficient mu
+    free,    ///< no constraint
+    fixed,   ///< all velocity components zero (no slip)
+    roller,  ///< normal velocity zero, tangential free (bilateral slip)
+    friction ///< unilateral contact with Coulomb friction coefficient mu
   };
 
   struct WallCondition
@@ -105,11 +105,11 @@ namespace fsgmpm
   private:
     struct Entry
     {
-      bool                                   fixed   = false;
-      unsigned int                           n_walls = 0;
-      std::array<Tensor<1, dim>, dim>        normal;
-      std::array<WallType, dim>              type;
-      std::array<double, dim>                friction;
+      bool                            fixed   = false;
+      unsigned int                    n_walls = 0;
+      std::array<Tensor<1, dim>, dim> normal;
+      std::array<WallType, dim>       type;
+      std::array<double, dim>         friction;
     };
     std::vector<Entry>        entries;
     std::vector<unsigned int> node_to_entry;

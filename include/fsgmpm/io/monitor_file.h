@@ -15,11 +15,13 @@ namespace fsgmpm
   class MonitorFile
   {
   public:
-    MonitorFile(const std::string &file_name, const std::vector<std::string> &columns);
+    MonitorFile(const std::string              &file_name,
+                const std::vector<std::string> &columns);
     ~MonitorFile();
     MonitorFile(const MonitorFile &) = delete;
     MonitorFile &
-    operator=(const MonitorFile &) = delete;
+    operator=(const MonitorFile &)
+      = delete;
 
     void
     write_row(const std::vector<double> &values);

@@ -23,7 +23,9 @@ namespace fsgmpm
     declare_parameters(ParameterHandler &prm);
     /// Read and validate; @p path names the subsection in error messages.
     static std::unique_ptr<LinearElastic>
-    create(ParameterHandler &prm, const double density, const std::string &path);
+    create(ParameterHandler  &prm,
+           const double       density,
+           const std::string &path);
 
     std::string
     name() const override

@@ -18,12 +18,12 @@ namespace fsgmpm
   template <int dim>
   struct BodyDescription
   {
-    std::string                      path; ///< "Bodies/Body N"
-    std::unique_ptr<BodyShape<dim>>  shape;
-    std::unique_ptr<Material>        material;
-    unsigned int                     particles_per_cell;
-    double                           density;
-    Tensor<1, dim>                   initial_velocity;
+    std::string                     path; ///< "Bodies/Body N"
+    std::unique_ptr<BodyShape<dim>> shape;
+    std::unique_ptr<Material>       material;
+    unsigned int                    particles_per_cell;
+    double                          density;
+    Tensor<1, dim>                  initial_velocity;
     /// Initial stress: none, or geostatic (sigma_yy = -rho g (y_top - y),
     /// sigma_xx = sigma_zz = K0 sigma_yy) from the body's top surface.
     bool   geostatic;

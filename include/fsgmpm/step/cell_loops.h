@@ -15,7 +15,9 @@ namespace fsgmpm
     /// Run f(begin, end) over [0, n) in parallel chunks (TBB through deal.II).
     template <typename Function>
     void
-    parallel_range(const unsigned int n, const Function &f, const unsigned int grain = 256)
+    parallel_range(const unsigned int n,
+                   const Function    &f,
+                   const unsigned int grain = 256)
     {
       dealii::parallel::apply_to_subranges(0u, n, f, grain);
     }

@@ -31,9 +31,9 @@ namespace fsgmpm
     /// nodes of occupied cells become the active nodes.
     template <int dim>
     void
-    p2g(const BackgroundGrid<dim>     &grid,
-        const ParticleStore<dim>      &particles,
-        NodalFields<dim>              &nodes);
+    p2g(const BackgroundGrid<dim> &grid,
+        const ParticleStore<dim>  &particles,
+        NodalFields<dim>          &nodes);
 
     /// What grid_update reports for energy bookkeeping and Eq. (30).
     struct GridUpdateResult
