@@ -138,6 +138,19 @@ end
     const double lame = 0, mu = 0.5e6 / 1.3; // stress update cost only
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
 
+    // FEValues at the reference locations of the particles of one cell (as
+    // step-19 and step-70 do), and that cell's DoF indices.
+    auto particle_fe_values = [&](const auto &range, const auto &cell) {
+      std::vector<Point<dim>> refs;
+      for (const auto &p : range)
+        refs.push_back(p.get_reference_location());
+      auto fev = std::make_unique<FEValues<dim>>(
+        mapping, fe, Quadrature<dim>(refs), update_values | update_gradients);
+      fev->reinit(cell);
+      cell->get_dof_indices(dofs);
+      return fev;
+    };
+
     const auto t0 = Clock::now();
     for (unsigned int step = 0; step < steps; ++step)
       {
@@ -150,16 +163,9 @@ end
             const auto range = handler.particles_in_cell(cell);
             if (range.begin() == range.end())
               continue;
-            std::vector<Point<dim>> refs;
-            for (const auto &p : range)
-              refs.push_back(p.get_reference_location());
-            FEValues<dim> fev(mapping,
-                              fe,
-                              Quadrature<dim>(refs),
-                              update_values | update_gradients);
-            fev.reinit(cell);
-            cell->get_dof_indices(dofs);
-            unsigned int q = 0;
+            const auto           fev_pointer = particle_fe_values(range, cell);
+            const FEValues<dim> &fev         = *fev_pointer;
+            unsigned int         q           = 0;
             for (const auto &p : range)
               {
                 const auto     pr = p.get_properties();
@@ -193,16 +199,9 @@ end
             const auto range = handler.particles_in_cell(cell);
             if (range.begin() == range.end())
               continue;
-            std::vector<Point<dim>> refs;
-            for (const auto &p : range)
-              refs.push_back(p.get_reference_location());
-            FEValues<dim> fev(mapping,
-                              fe,
-                              Quadrature<dim>(refs),
-                              update_values | update_gradients);
-            fev.reinit(cell);
-            cell->get_dof_indices(dofs);
-            unsigned int q = 0;
+            const auto           fev_pointer = particle_fe_values(range, cell);
+            const FEValues<dim> &fev         = *fev_pointer;
+            unsigned int         q           = 0;
             for (auto &p : range)
               {
                 auto           pr = p.get_properties();

@@ -65,6 +65,20 @@ namespace
     return prm;
   }
 
+  // Number of points in the top sub-row of the initial particle lattice.
+  template <int dim>
+  unsigned int
+  top_layer_size(const ParticleStore<dim> &particles)
+  {
+    double ymax = 0;
+    for (const auto &x : particles.position)
+      ymax = std::max(ymax, x[1]);
+    unsigned int n_top = 0;
+    for (const auto &x : particles.position)
+      n_top += (x[1] > ymax - 1e-9);
+    return n_top;
+  }
+
   // Mean height of the topmost layer of points (n_top of them).
   template <int dim>
   double
@@ -105,18 +119,12 @@ namespace
   {
     Result r;
     {
-      auto           prm = test_tools::make_parameters(scene<dim>(false));
-      Simulator<dim> sim(*prm);
-      const auto    &particles = sim.get_particles();
-      // Top layer: points within the top sub-row of the lattice.
-      double ymax = 0;
-      for (const auto &x : particles.position)
-        ymax = std::max(ymax, x[1]);
-      unsigned int n_top = 0;
-      for (const auto &x : particles.position)
-        n_top += (x[1] > ymax - 1e-9);
-      const double y_top0 = top_height(particles, n_top);
-      double       t_peak = 0;
+      auto               prm = test_tools::make_parameters(scene<dim>(false));
+      Simulator<dim>     sim(*prm);
+      const auto        &particles = sim.get_particles();
+      const unsigned int n_top     = top_layer_size(particles);
+      const double       y_top0    = top_height(particles, n_top);
+      double             t_peak    = 0;
       while (sim.advance())
         {
           const double u = y_top0 - top_height(particles, n_top);
@@ -133,16 +141,11 @@ namespace
       r.period = 2 * t_peak;
     }
     {
-      auto           prm = test_tools::make_parameters(scene<dim>(true));
-      Simulator<dim> sim(*prm);
-      const auto    &particles = sim.get_particles();
-      double         ymax      = 0;
-      for (const auto &x : particles.position)
-        ymax = std::max(ymax, x[1]);
-      unsigned int n_top = 0;
-      for (const auto &x : particles.position)
-        n_top += (x[1] > ymax - 1e-9);
-      const double y_top0 = top_height(particles, n_top);
+      auto               prm = test_tools::make_parameters(scene<dim>(true));
+      Simulator<dim>     sim(*prm);
+      const auto        &particles = sim.get_particles();
+      const unsigned int n_top     = top_layer_size(particles);
+      const double       y_top0    = top_height(particles, n_top);
       while (sim.advance())
         {}
       EXPECT_EQ(sim.get_termination(), "dr_converged") << sim.get_diagnosis();
