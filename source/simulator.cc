@@ -29,6 +29,8 @@ namespace fsgmpm
       g2p_stage,
       remap_stage,
       stress_update_stage,
+      free_surface_stage,
+      anp_stage,
       position_stage,
       relocate_stage,
       monitor_stage,
@@ -58,6 +60,8 @@ namespace fsgmpm
                                                    "g2p",
                                                    "remap",
                                                    "stress_update",
+                                                   "free_surface",
+                                                   "anp",
                                                    "position_update",
                                                    "relocate",
                                                    "monitors",
@@ -118,6 +122,18 @@ namespace fsgmpm
     constraints = std::make_unique<NodalConstraints<dim>>(*grid, params.walls);
     nodes.resize(grid->n_nodes());
     setup_bodies();
+    smoothing.resize(materials.size(), grid->n_nodes(), grid->n_cells());
+
+    Point<dim> cell_size;
+    for (unsigned int d = 0; d < dim; ++d)
+      cell_size[d] = (params.grid_type != "gmsh")
+                       ? (params.upper_corner[d] - params.lower_corner[d])
+                           / params.subdivisions[std::min<unsigned int>(
+                             d, params.subdivisions.size() - 1)]
+                       : grid->max_altitude_global;
+    scene_monitors = std::make_unique<SceneMonitors<dim>>(prm,
+                                                          grid->lower_corner,
+                                                          cell_size);
 
     reinitialize_state();
   }
@@ -130,6 +146,8 @@ namespace fsgmpm
   {
     particles.sort_by_cell(grid->n_cells());
     Stages::p2g(*grid, particles, nodes);
+    update_free_surface_fraction(Stages::detect_free_surface(
+      *grid, nodes, material_options, smoothing, particles));
     compute_monitors();
     previous_kinetic_energy = monitors.kinetic_energy;
     energy_history.clear();
@@ -160,22 +178,32 @@ namespace fsgmpm
                   b,
                   b,
                   particles);
-        if (body.geostatic)
+        using InitialStress = typename BodyDescription<dim>::InitialStress;
+        if (body.initial_stress != InitialStress::none)
           {
             // sigma_yy = rho g_y (y_top - y): compression below the top.
             double y_top = -std::numeric_limits<double>::max();
             for (const auto &p : body.shape->outline_points())
               y_top = std::max(y_top, p[1]);
+            const double k
+              = body.initial_stress == InitialStress::geostatic ? body.k0 : 1.;
             for (unsigned int p = first; p < particles.size(); ++p)
               {
                 const double syy = body.density * params.gravity[1]
                                    * (y_top - particles.position[p][1]);
                 SymmetricTensor<2, 3> s;
-                s[0][0] = s[2][2]   = body.k0 * syy;
-                s[1][1]             = syy;
+                s[0][0] = s[2][2] = k * syy;
+                s[1][1]           = syy;
+                if (dim == 3)
+                  s[2][2] = k * syy;
                 particles.stress[p] = s;
+                // A fluid carries this pressure at a compressed volume.
+                particles.volume[p]
+                  = particles.reference_volume[p]
+                    * body.material->volume_ratio_for_pressure(-syy);
               }
           }
+        material_options.push_back(body.options);
         materials.push_back(std::move(body.material));
       }
     particles.sort_by_cell(grid->n_cells());
@@ -190,6 +218,18 @@ namespace fsgmpm
     if (params.gravity_ramp_time > 0 && time < params.gravity_ramp_time)
       return params.gravity * (time / params.gravity_ramp_time);
     return params.gravity;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_free_surface_fraction(const unsigned int n_flagged)
+  {
+    unsigned int n = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      n += material_options[particles.material_id[p]].detect_free_surface;
+    monitors.free_surface_fraction = n > 0 ? double(n_flagged) / n : 0.;
   }
 
 
@@ -375,7 +415,16 @@ namespace fsgmpm
       timed(remap_stage,
             [&] { Stages::remap(*grid, particles, *constraints, nodes); });
     timed(stress_update_stage, [&] {
-      Stages::stress_update(*grid, nodes, materials, dt, particles);
+      Stages::stress_update(
+        *grid, nodes, materials, material_options, dt, smoothing, particles);
+    });
+    timed(free_surface_stage, [&] {
+      update_free_surface_fraction(Stages::detect_free_surface(
+        *grid, nodes, material_options, smoothing, particles));
+    });
+    timed(anp_stage, [&] {
+      Stages::average_nodal_pressure(
+        *grid, nodes, material_options, smoothing, particles);
     });
     timed(position_stage, [&] {
       displacement_ratio
@@ -492,31 +541,45 @@ namespace fsgmpm
 
     particle_series = std::make_unique<PvdSeries>(dir, "particles");
     grid_series     = std::make_unique<PvdSeries>(dir, "grid");
-    monitor_file    = std::make_unique<MonitorFile>(
-      dir + "/monitors.csv",
-      std::vector<std::string>{"time",
-                                  "step",
-                                  "dt",
-                                  "kinetic_energy",
-                                  "strain_energy",
-                                  "potential_energy",
-                                  "external_work",
-                                  "dissipated_energy",
-                                  "dr_energy_ratio",
-                                  "dr_force_ratio",
-                                  "lost_particles"});
+    // Common columns (SPEC 6), the free-surface fraction where a body
+    // detects free surfaces, then the scene's own columns.
+    bool detecting = false;
+    for (const auto &o : material_options)
+      detecting = detecting || o.detect_free_surface;
+    std::vector<std::string> columns = {"time",
+                                        "step",
+                                        "dt",
+                                        "kinetic_energy",
+                                        "strain_energy",
+                                        "potential_energy",
+                                        "external_work",
+                                        "dissipated_energy",
+                                        "dr_energy_ratio",
+                                        "dr_force_ratio",
+                                        "lost_particles"};
+    if (detecting)
+      columns.push_back("free_surface_fraction");
+    for (const auto &name : scene_monitors->names())
+      columns.push_back(name);
+    monitor_file
+      = std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
     auto write_monitor_row = [&] {
-      monitor_file->write_row({time,
-                               double(step),
-                               dt,
-                               monitors.kinetic_energy,
-                               monitors.strain_energy,
-                               monitors.potential_energy,
-                               monitors.external_work,
-                               monitors.dissipated_energy,
-                               monitors.dr_energy_ratio,
-                               monitors.dr_force_ratio,
-                               double(monitors.lost_particles)});
+      std::vector<double> row = {time,
+                                 double(step),
+                                 dt,
+                                 monitors.kinetic_energy,
+                                 monitors.strain_energy,
+                                 monitors.potential_energy,
+                                 monitors.external_work,
+                                 monitors.dissipated_energy,
+                                 monitors.dr_energy_ratio,
+                                 monitors.dr_force_ratio,
+                                 double(monitors.lost_particles)};
+      if (detecting)
+        row.push_back(monitors.free_surface_fraction);
+      for (const double v : scene_monitors->evaluate(particles))
+        row.push_back(v);
+      monitor_file->write_row(row);
     };
     const bool interval_output = params.output_interval > 0;
     const bool any_output

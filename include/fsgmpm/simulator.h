@@ -7,10 +7,13 @@
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/io/particle_output.h>
+#include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
+#include <fsgmpm/step/material_options.h>
+#include <fsgmpm/step/smoothing_fields.h>
 
 #include <array>
 #include <deque>
@@ -33,6 +36,8 @@ namespace fsgmpm
     double       dr_energy_ratio   = 0; ///< Eq. (30): E_kin / W_ext (nodal)
     double       dr_force_ratio    = 0; ///< Eq. (30): |F_ext-F_int|/|F_ext|
     unsigned int lost_particles    = 0;
+    /// Flagged (free-surface) points / points of detecting materials.
+    double free_surface_fraction = 0;
   };
 
   /**
@@ -89,6 +94,22 @@ namespace fsgmpm
     get_monitors() const
     {
       return monitors;
+    }
+    const std::vector<MaterialOptions> &
+    get_material_options() const
+    {
+      return material_options;
+    }
+    /// Values of the scene monitors (names in get_scene_monitor_names()).
+    std::vector<double>
+    get_scene_monitors() const
+    {
+      return scene_monitors->evaluate(particles);
+    }
+    const std::vector<std::string> &
+    get_scene_monitor_names() const
+    {
+      return scene_monitors->names();
     }
     const std::vector<std::unique_ptr<Material>> &
     get_materials() const
@@ -151,6 +172,8 @@ namespace fsgmpm
     setup_bodies();
     void
     compute_monitors();
+    void
+    update_free_surface_fraction(const unsigned int n_flagged);
     bool
     check_stability(const double displacement_ratio);
     void
@@ -167,6 +190,9 @@ namespace fsgmpm
     NodalFields<dim>                       nodes;
     ParticleStore<dim>                     particles;
     std::vector<std::unique_ptr<Material>> materials;
+    std::vector<MaterialOptions>           material_options;
+    SmoothingFields<dim>                   smoothing;
+    std::unique_ptr<SceneMonitors<dim>>    scene_monitors;
 
     double       time = 0, dt = 0, dt_min = 0, dt_max = 0;
     unsigned int step = 0;

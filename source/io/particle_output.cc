@@ -21,7 +21,7 @@ namespace fsgmpm
   void
   ParticleOutput<dim>::build_patches(const ParticleStore<dim> &particles)
   {
-    const unsigned int n_fields = dim + n_stress_components(dim) + 5;
+    const unsigned int n_fields = dim + n_stress_components(dim) + 6;
     patches.resize(particles.size());
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
@@ -47,6 +47,7 @@ namespace fsgmpm
         patch.data(f++, 0) = particles.volume[p];
         patch.data(f++, 0) = particles.material_id[p];
         patch.data(f++, 0) = particles.body_id[p];
+        patch.data(f++, 0) = particles.free_surface[p];
       }
   }
 
@@ -62,8 +63,12 @@ namespace fsgmpm
         names.emplace_back("stress_xz");
         names.emplace_back("stress_yz");
       }
-    for (const auto &n :
-         {"pressure", "mass", "volume", "material_id", "body_id"})
+    for (const auto &n : {"pressure",
+                          "mass",
+                          "volume",
+                          "material_id",
+                          "body_id",
+                          "free_surface"})
       names.emplace_back(n);
     return names;
   }

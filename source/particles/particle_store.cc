@@ -19,11 +19,12 @@ namespace fsgmpm
     cell.push_back(c);
     mass.push_back(m);
     volume.push_back(v0);
-    initial_volume.push_back(v0);
+    reference_volume.push_back(v0);
     velocity.push_back(vel);
     stress.push_back(sigma);
     material_id.push_back(material);
     body_id.push_back(body);
+    free_surface.push_back(0);
   }
 
 
@@ -75,10 +76,11 @@ namespace fsgmpm
     permute(stress, order_scratch);
     permute(mass, order_scratch);
     permute(volume, order_scratch);
-    permute(initial_volume, order_scratch);
+    permute(reference_volume, order_scratch);
     permute(cell, order_scratch);
     permute(material_id, order_scratch);
     permute(body_id, order_scratch);
+    permute(free_surface, order_scratch);
   }
 
 
@@ -104,10 +106,11 @@ namespace fsgmpm
     shrink(stress);
     shrink(mass);
     shrink(volume);
-    shrink(initial_volume);
+    shrink(reference_volume);
     shrink(cell);
     shrink(material_id);
     shrink(body_id);
+    shrink(free_surface);
   }
 
 
@@ -122,10 +125,11 @@ namespace fsgmpm
       = position.capacity() * sizeof(Point<dim>)
         + velocity.capacity() * sizeof(Tensor<1, dim>)
         + stress.capacity() * sizeof(SymmetricTensor<2, 3>)
-        + (mass.capacity() + volume.capacity() + initial_volume.capacity())
+        + (mass.capacity() + volume.capacity() + reference_volume.capacity())
             * sizeof(double)
         + cell.capacity() * sizeof(unsigned int)
         + (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t)
+        + free_surface.capacity()
         + order_scratch.capacity() * sizeof(unsigned int)
         + value_scratch.capacity();
     return bytes / size();

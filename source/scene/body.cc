@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/materials/linear_elastic.h>
+#include <fsgmpm/materials/newtonian_fluid.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 
@@ -62,21 +63,48 @@ namespace fsgmpm
                           "means z = 0.");
         prm.declare_entry("Material model",
                           "linear elastic",
-                          Patterns::Selection("linear elastic"),
+                          Patterns::Selection("linear elastic|Newtonian fluid"),
                           "Constitutive model of the body.");
+        prm.declare_entry("Volumetric smoothing",
+                          "default",
+                          Patterns::Selection("default|none|NMD|ANP|NMD+ANP"),
+                          "Volumetric-locking remedies (paper Section 3): NMD "
+                          "(Eqs. 22-25), ANP (Eqs. 28-29), both, or none; "
+                          "default: NMD+ANP for fluids, none for solids.");
+        prm.declare_entry("ANP mapping",
+                          "element_mean",
+                          Patterns::Selection("element_mean|interpolate"),
+                          "How the nodal ANP pressure goes back to the points: "
+                          "the mean of the cell's nodes (paper) or "
+                          "interpolated at the point.");
+        prm.declare_entry("Free surface detection",
+                          "default",
+                          Patterns::Selection("default|true|false"),
+                          "Flag free-surface and drop points (zero pressure, "
+                          "volume reset, left out of ANP); default: on for "
+                          "fluids, off for solids. Switch off for a fluid "
+                          "enclosed by a membrane.");
+        prm.declare_entry("Free surface threshold",
+                          "0.6",
+                          Patterns::Double(0, 1),
+                          "f_c: a point whose interpolated nodal volume "
+                          "fraction is at most f_c is a free-surface point, "
+                          "0 < f_c < 1.");
         prm.declare_entry(
           "Initial stress",
           "none",
-          Patterns::Selection("none|geostatic"),
+          Patterns::Selection("none|geostatic|hydrostatic"),
           "none: stress free; geostatic: sigma_yy = -rho g "
           "(y_top - y) from the body's top, sigma_xx = sigma_zz "
-          "= K0 sigma_yy (uses Simulation/Gravity).");
+          "= K0 sigma_yy; hydrostatic: pressure rho g (y_top - y), for "
+          "fluids with the matching density (uses Simulation/Gravity).");
         prm.declare_entry("K0",
                           "0.5",
                           Patterns::Double(0),
                           "Lateral stress ratio for Initial stress = "
                           "geostatic.");
         LinearElastic::declare_parameters(prm);
+        NewtonianFluid::declare_parameters(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -169,11 +197,40 @@ namespace fsgmpm
         body.initial_velocity
           = parse_vector<dim>(prm.get("Initial velocity"),
                               body.path + "/Initial velocity");
-        body.geostatic          = (prm.get("Initial stress") == "geostatic");
+        const std::string initial = prm.get("Initial stress");
+        body.initial_stress
+          = initial == "geostatic"
+              ? BodyDescription<dim>::InitialStress::geostatic
+              : (initial == "hydrostatic"
+                   ? BodyDescription<dim>::InitialStress::hydrostatic
+                   : BodyDescription<dim>::InitialStress::none);
         body.k0                 = prm.get_double("K0");
         const std::string model = prm.get("Material model");
         if (model == "linear elastic")
           body.material = LinearElastic::create(prm, body.density, body.path);
+        else
+          body.material = NewtonianFluid::create(prm, body.density, body.path);
+
+        const bool        fluid     = body.material->is_fluid();
+        const std::string smoothing = prm.get("Volumetric smoothing");
+        body.options.nmd
+          = (smoothing == "default") ? fluid : (smoothing.find("NMD") == 0);
+        body.options.anp = (smoothing == "default")
+                             ? fluid
+                             : (smoothing.find("ANP") != std::string::npos);
+        body.options.anp_interpolate
+          = (prm.get("ANP mapping") == "interpolate");
+        const std::string detect = prm.get("Free surface detection");
+        body.options.detect_free_surface
+          = (detect == "default") ? fluid : (detect == "true");
+        body.options.free_surface_threshold
+          = prm.get_double("Free surface threshold");
+        AssertThrow(body.options.free_surface_threshold > 0
+                      && body.options.free_surface_threshold < 1,
+                    ExcMessage(body.path
+                               + "/Free surface threshold must lie in the open "
+                                 "interval (0, 1); got "
+                               + prm.get("Free surface threshold") + "."));
         prm.leave_subsection();
         bodies.push_back(std::move(body));
       }

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 
@@ -231,6 +232,7 @@ namespace fsgmpm
     prm.leave_subsection();
 
     BodyDescription<dim>::declare_parameters(prm);
+    SceneMonitors<dim>::declare_parameters(prm);
   }
 
 

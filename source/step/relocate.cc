@@ -55,12 +55,13 @@ namespace fsgmpm
                    p < particles.cell_start[c + 1];
                    ++p)
                 {
-                  const double rho = particles.mass[p] / particles.volume[p];
-                  speed
-                    = std::max(speed,
-                               materials[particles.material_id[p]]->wave_speed(
-                                 rho)
-                                 + particles.velocity[p].norm());
+                  const double    rho = particles.mass[p] / particles.volume[p];
+                  const Material &mat = *materials[particles.material_id[p]];
+                  speed               = std::max(speed,
+                                   mat.wave_speed(rho)
+                                     + particles.velocity[p].norm()
+                                     + 2. * dim * mat.viscosity()
+                                         / (rho * grid.cell_min_altitude[c]));
                 }
               cell_dt[i] = (speed > 0) ? grid.cell_min_altitude[c] / speed
                                        : std::numeric_limits<double>::max();

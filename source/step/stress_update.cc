@@ -2,6 +2,8 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <cmath>
+
 namespace fsgmpm
 {
   namespace Stages
@@ -11,32 +13,88 @@ namespace fsgmpm
     stress_update(const BackgroundGrid<dim>                    &grid,
                   const NodalFields<dim>                       &nodes,
                   const std::vector<std::unique_ptr<Material>> &materials,
+                  const std::vector<MaterialOptions>           &options,
                   const double                                  dt,
+                  SmoothingFields<dim>                         &smoothing,
                   ParticleStore<dim>                           &particles)
     {
+      // Linear simplices: grad v is constant in a cell.
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        // Linear simplices: grad v is constant in the cell.
         Tensor<2, dim> L;
         for (unsigned int k = 0; k < dim + 1; ++k)
           L += outer_product(nodes.velocity[grid.cell_nodes[c][k]],
                              grid.shape_gradients[c][k]);
-        Tensor<2, 3> L3;
+        smoothing.velocity_gradient[c] = L;
+      });
+
+      // NMD, Eq. (24): nodal volumetric strain rate, averaged over the
+      // attached non-empty cells with the volumes of the material's points
+      // as weights (per material).
+      bool any_nmd = false;
+      for (unsigned int m = 0; m < options.size(); ++m)
+        if (options[m].nmd)
+          {
+            smoothing.reset(m, nodes.active_nodes);
+            any_nmd = true;
+          }
+      if (any_nmd)
+        CellLoops::scatter_by_colour(
+          grid, particles, [&](const unsigned int c) {
+            const double rate = trace(smoothing.velocity_gradient[c]);
+            for (unsigned int p = particles.cell_start[c];
+                 p < particles.cell_start[c + 1];
+                 ++p)
+              {
+                const unsigned int m = particles.material_id[p];
+                if (!options[m].nmd)
+                  continue;
+                for (const unsigned int i : grid.cell_nodes[c])
+                  {
+                    smoothing.numerator[m][i] += particles.volume[p] * rate;
+                    smoothing.denominator[m][i] += particles.volume[p];
+                  }
+              }
+          });
+
+      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
+        const Tensor<2, dim> &L = smoothing.velocity_gradient[c];
+        Tensor<2, 3>          L3;
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             L3[i][j] = L[i][j];
-        PointKinematics kin;
-        kin.strain_rate = symmetrize(L3);
-        kin.spin        = 0.5 * (L3 - transpose(L3));
-        kin.rotation    = incremental_rotation(kin.spin, dt);
-
-        Tensor<2, dim> F_increment = unit_symmetric_tensor<dim>();
-        F_increment += dt * L;
-        const double J_increment = determinant(F_increment);
+        PointKinematics cell_kin;
+        cell_kin.strain_rate = symmetrize(L3);
+        cell_kin.spin        = 0.5 * (L3 - transpose(L3));
+        cell_kin.rotation    = incremental_rotation(cell_kin.spin, dt);
+        const double rate    = trace(L);
 
         thread_local std::vector<PointKinematics> kinematics;
         const unsigned int begin = particles.cell_start[c];
         const unsigned int end   = particles.cell_start[c + 1];
-        kinematics.assign(end - begin, kin);
+        kinematics.assign(end - begin, cell_kin);
+        for (unsigned int p = begin; p < end; ++p)
+          {
+            PointKinematics   &kin = kinematics[p - begin];
+            const unsigned int m   = particles.material_id[p];
+            if (options[m].nmd)
+              {
+                // Eq. (25): the smoothed rate at the cell centre replaces the
+                // volumetric part; in plane strain only xx and yy change, so
+                // that the zz strain rate stays zero.
+                double smoothed = 0;
+                for (const unsigned int i : grid.cell_nodes[c])
+                  smoothed += smoothing.average(m, i);
+                smoothed /= (dim + 1);
+                const double correction = (smoothed - rate) / dim;
+                for (unsigned int d = 0; d < dim; ++d)
+                  kin.strain_rate[d][d] += correction;
+              }
+            // Volume (and so density) with the same volumetric rate as the
+            // pressure.
+            particles.volume[p] *= std::exp(dt * trace(kin.strain_rate));
+            kin.volume_ratio
+              = particles.volume[p] / particles.reference_volume[p];
+          }
 
         // One call per run of points of the same material.
         unsigned int run = begin;
@@ -52,8 +110,6 @@ namespace fsgmpm
                                             dt);
             run = last;
           }
-        for (unsigned int p = begin; p < end; ++p)
-          particles.volume[p] *= J_increment;
       });
     }
 
@@ -61,13 +117,17 @@ namespace fsgmpm
     stress_update<2>(const BackgroundGrid<2> &,
                      const NodalFields<2> &,
                      const std::vector<std::unique_ptr<Material>> &,
+                     const std::vector<MaterialOptions> &,
                      const double,
+                     SmoothingFields<2> &,
                      ParticleStore<2> &);
     template void
     stress_update<3>(const BackgroundGrid<3> &,
                      const NodalFields<3> &,
                      const std::vector<std::unique_ptr<Material>> &,
+                     const std::vector<MaterialOptions> &,
                      const double,
+                     SmoothingFields<3> &,
                      ParticleStore<3> &);
   } // namespace Stages
 } // namespace fsgmpm

@@ -21,6 +21,9 @@ namespace fsgmpm
     /// Exactly orthogonal incremental rotation of the step from the spin
     /// (hill_rotation.h), computed once per cell by the stress stage.
     Tensor<2, 3> rotation;
+    /// J = V/V_ref after this step's volume update (with the same,
+    /// possibly NMD-smoothed, volumetric strain rate as strain_rate).
+    double volume_ratio = 1.;
   };
 
   /**
@@ -55,6 +58,28 @@ namespace fsgmpm
     /// Mass density at which the material is created.
     virtual double
     reference_density() const = 0;
+
+    /// Dynamic viscosity (Pa s) for the viscous time-step limit.
+    virtual double
+    viscosity() const
+    {
+      return 0.;
+    }
+
+    /// Fluids: the volume ratio J = V/V_ref at which the material carries
+    /// the pressure p (for a hydrostatic initial state). Solids: 1.
+    virtual double
+    volume_ratio_for_pressure(const double /*pressure*/) const
+    {
+      return 1.;
+    }
+
+    /// Whether the material is a fluid (free-surface detection applies).
+    virtual bool
+    is_fluid() const
+    {
+      return false;
+    }
   };
 } // namespace fsgmpm
 

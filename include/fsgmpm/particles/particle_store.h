@@ -66,11 +66,14 @@ namespace fsgmpm
     std::vector<SymmetricTensor<2, 3>> stress;
     std::vector<double>                mass;
     std::vector<double>                volume;
-    /// Initial volume (reference for the deformation state J = V/V0).
-    std::vector<double>        initial_volume;
+    /// Reference volume: the volume at zero pressure (fluids: m/rho_ref),
+    /// so that J = V/V_ref is the deformation state of Eq. (16).
+    std::vector<double>        reference_volume;
     std::vector<unsigned int>  cell;
     std::vector<std::uint16_t> material_id;
     std::vector<std::uint16_t> body_id;
+    /// 1 for points flagged as free surface or drops (paper Eq. 33).
+    std::vector<std::uint8_t> free_surface;
 
   private:
     template <typename T>

@@ -5,6 +5,7 @@
 
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/particles/body_shape.h>
+#include <fsgmpm/step/material_options.h>
 
 #include <memory>
 #include <vector>
@@ -24,10 +25,20 @@ namespace fsgmpm
     unsigned int                    particles_per_cell;
     double                          density;
     Tensor<1, dim>                  initial_velocity;
-    /// Initial stress: none, or geostatic (sigma_yy = -rho g (y_top - y),
-    /// sigma_xx = sigma_zz = K0 sigma_yy) from the body's top surface.
-    bool   geostatic;
-    double k0;
+    /// Initial stress: none; geostatic (sigma_yy = -rho g (y_top - y),
+    /// sigma_xx = sigma_zz = K0 sigma_yy) from the body's top surface; or
+    /// hydrostatic (pressure rho g (y_top - y); fluids also get the matching
+    /// compressed volume).
+    enum class InitialStress
+    {
+      none,
+      geostatic,
+      hydrostatic
+    };
+    InitialStress initial_stress;
+    double        k0;
+    /// NMD, ANP and free-surface switches of the body's material.
+    MaterialOptions options;
 
     static void
     declare_parameters(ParameterHandler &prm);

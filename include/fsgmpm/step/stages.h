@@ -6,6 +6,8 @@
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/particles/particle_store.h>
+#include <fsgmpm/step/material_options.h>
+#include <fsgmpm/step/smoothing_fields.h>
 
 #include <memory>
 #include <vector>
@@ -17,9 +19,10 @@ namespace fsgmpm
    * Eqs. 17-21). A stage knows nothing about the scene; the Simulator calls
    *
    *   MUSL (default):  p2g -> grid_update -> g2p -> remap -> stress_update
-   *                    -> update_positions -> relocate
-   *   USL:             p2g -> grid_update -> g2p -> stress_update
-   *                    -> update_positions -> relocate
+   *                    (with NMD) -> detect_free_surface
+   *                    -> average_nodal_pressure -> update_positions
+   *                    -> relocate
+   *   USL:             the same without remap
    *
    * Particles must be sorted by cell (ParticleStore::sort_by_cell) before
    * p2g. Scatters run in parallel over the cells of one colour, so they are
@@ -72,16 +75,42 @@ namespace fsgmpm
           const NodalConstraints<dim> &constraints,
           NodalFields<dim>            &nodes);
 
-    /// Stage 5: velocity gradient (constant per cell on linear simplices),
-    /// strain rate and spin, stress update per material, and the volume
-    /// update V <- V det(I + dt grad v).
+    /// Stage 5a: velocity gradient (constant per cell on linear simplices),
+    /// strain rate and spin, NMD (Eqs. 22-25) for the materials that use
+    /// it, the volume update V <- V exp(dt tr d) with the same (smoothed)
+    /// rate, and the stress update per material.
     template <int dim>
     void
     stress_update(const BackgroundGrid<dim>                    &grid,
                   const NodalFields<dim>                       &nodes,
                   const std::vector<std::unique_ptr<Material>> &materials,
+                  const std::vector<MaterialOptions>           &options,
                   const double                                  dt,
+                  SmoothingFields<dim>                         &smoothing,
                   ParticleStore<dim>                           &particles);
+
+    /// Stage 5b (paper Section 4, volume-fraction form): flag the points of
+    /// detecting materials whose interpolated nodal volume fraction is at
+    /// most f_c; flagged points get zero pressure and their reference
+    /// volume. Returns the number of flagged points.
+    template <int dim>
+    unsigned int
+    detect_free_surface(const BackgroundGrid<dim>          &grid,
+                        const NodalFields<dim>             &nodes,
+                        const std::vector<MaterialOptions> &options,
+                        SmoothingFields<dim>               &smoothing,
+                        ParticleStore<dim>                 &particles);
+
+    /// Stage 5c, ANP (Eqs. 28-29): nodal volume-weighted average of the
+    /// pressure of the non-flagged points per material, mapped back as the
+    /// element mean (paper) or interpolated.
+    template <int dim>
+    void
+    average_nodal_pressure(const BackgroundGrid<dim>          &grid,
+                           const NodalFields<dim>             &nodes,
+                           const std::vector<MaterialOptions> &options,
+                           SmoothingFields<dim>               &smoothing,
+                           ParticleStore<dim>                 &particles);
 
     /// Stage 6 (Eq. 21): x_p += dt sum_i N_i(x_p) v_i. Returns the largest
     /// ratio of a point's displacement to its cell's smallest altitude
@@ -99,7 +128,8 @@ namespace fsgmpm
     unsigned int
     relocate(const BackgroundGrid<dim> &grid, ParticleStore<dim> &particles);
 
-    /// Stable time step C * min over points of h_cell / (c_p + |v_p|).
+    /// Stable time step C * min over points of h / (c_p + |v_p| + 2 d nu/h)
+    /// (wave speed, particle speed, and the explicit viscous limit).
     template <int dim>
     double
     stable_time_step(const BackgroundGrid<dim>                    &grid,

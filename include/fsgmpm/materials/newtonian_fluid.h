@@ -1,0 +1,97 @@
+#ifndef fsgmpm_materials_newtonian_fluid_h
+#define fsgmpm_materials_newtonian_fluid_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <fsgmpm/materials/material.h>
+
+#include <memory>
+
+namespace fsgmpm
+{
+  /**
+   * Weakly compressible Newtonian fluid, paper Eqs. (11)-(16):
+   * sigma = -p I + 2 mu dev(d) (Stokes' hypothesis, Eq. 13), with the
+   * pressure a function of the volume ratio J = V/V_ref = rho_ref/rho:
+   *   linear (Eq. 16):  p = -K_f (J - 1)
+   *   power  (Eq. 15):  p = (K_f/kappa) (J^-kappa - 1)   (Tait form; same
+   *                     bulk modulus K_f at the reference state)
+   * The volume is updated by the stress stage with the same (NMD-smoothed)
+   * volumetric strain rate, so pressure and density stay consistent.
+   * Tension policy: unless Allow tension is set, p >= 0 (cavitation at zero
+   * gauge pressure).
+   */
+  class NewtonianFluid : public Material
+  {
+  public:
+    enum class PressureLaw
+    {
+      linear,
+      power
+    };
+
+    NewtonianFluid(const double      bulk_modulus,
+                   const double      viscosity,
+                   const double      density,
+                   const PressureLaw law,
+                   const double      exponent,
+                   const bool        allow_tension);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    static std::unique_ptr<NewtonianFluid>
+    create(ParameterHandler  &prm,
+           const double       density,
+           const std::string &path);
+
+    std::string
+    name() const override
+    {
+      return "Newtonian fluid";
+    }
+
+    void
+    update_stresses(const PointKinematics *kinematics,
+                    SymmetricTensor<2, 3> *stress,
+                    const unsigned int     n,
+                    const double           dt) const override;
+
+    double
+    wave_speed(const double density) const override;
+
+    double
+    strain_energy_density(const SymmetricTensor<2, 3> &stress) const override;
+
+    double
+    reference_density() const override
+    {
+      return density;
+    }
+
+    double
+    viscosity() const override
+    {
+      return mu;
+    }
+
+    double
+    volume_ratio_for_pressure(const double pressure) const override;
+
+    bool
+    is_fluid() const override
+    {
+      return true;
+    }
+
+    /// Pressure at volume ratio J (before the tension cut-off).
+    double
+    pressure(const double J) const;
+
+    const double      K, mu, density;
+    const PressureLaw law;
+    const double      kappa;
+    const bool        allow_tension;
+  };
+} // namespace fsgmpm
+
+#endif

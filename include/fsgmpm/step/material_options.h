@@ -1,0 +1,22 @@
+#ifndef fsgmpm_step_material_options_h
+#define fsgmpm_step_material_options_h
+
+namespace fsgmpm
+{
+  /**
+   * Which of the volumetric-locking and free-surface stages act on the
+   * points of one material (paper Sections 3 and 4). A scene only pays for
+   * what its bodies switch on.
+   */
+  struct MaterialOptions
+  {
+    bool nmd = false; ///< nodal mixed discretisation, Eqs. (22)-(25)
+    bool anp = false; ///< average nodal pressure, Eqs. (28)-(29)
+    /// ANP back-mapping: false = element mean (paper), true = interpolate.
+    bool   anp_interpolate        = false;
+    bool   detect_free_surface    = false; ///< volume-fraction form, Eq. (33)
+    double free_surface_threshold = 0.6;   ///< f_c
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,61 @@
+#ifndef fsgmpm_step_smoothing_fields_h
+#define fsgmpm_step_smoothing_fields_h
+
+#include <deal.II/base/tensor.h>
+
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Scratch nodal fields of the NMD, ANP and free-surface stages: one
+   * numerator/denominator pair per material that uses them (volume-weighted
+   * averages per material), the free-surface volume fraction, and the
+   * velocity gradient of every occupied cell. Only the active nodes are
+   * reset.
+   */
+  template <int dim>
+  struct SmoothingFields
+  {
+    void
+    resize(const unsigned int n_materials,
+           const unsigned int n_nodes,
+           const unsigned int n_cells)
+    {
+      numerator.assign(n_materials, {});
+      denominator.assign(n_materials, {});
+      this->n_nodes = n_nodes;
+      velocity_gradient.resize(n_cells);
+    }
+
+    /// Make sure material m has nodal arrays and zero them on @p nodes.
+    template <typename NodeList>
+    void
+    reset(const unsigned int m, const NodeList &nodes)
+    {
+      if (numerator[m].size() != n_nodes)
+        {
+          numerator[m].assign(n_nodes, 0.);
+          denominator[m].assign(n_nodes, 0.);
+        }
+      for (const unsigned int i : nodes)
+        numerator[m][i] = denominator[m][i] = 0.;
+    }
+
+    /// Nodal average of material m at node i (0 if nothing contributed).
+    double
+    average(const unsigned int m, const unsigned int i) const
+    {
+      return denominator[m][i] > 0 ? numerator[m][i] / denominator[m][i] : 0.;
+    }
+
+    std::vector<std::vector<double>> numerator, denominator;
+    std::vector<double>              volume_fraction, lumped_volume;
+    std::vector<Tensor<2, dim>>      velocity_gradient;
+    unsigned int                     n_nodes = 0;
+  };
+} // namespace fsgmpm
+
+#endif

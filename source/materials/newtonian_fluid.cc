@@ -1,0 +1,140 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/materials/newtonian_fluid.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  NewtonianFluid::NewtonianFluid(const double      bulk_modulus,
+                                 const double      viscosity,
+                                 const double      density,
+                                 const PressureLaw law,
+                                 const double      exponent,
+                                 const bool        allow_tension)
+    : K(bulk_modulus)
+    , mu(viscosity)
+    , density(density)
+    , law(law)
+    , kappa(exponent)
+    , allow_tension(allow_tension)
+  {}
+
+
+
+  void
+  NewtonianFluid::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newtonian fluid");
+    prm.declare_entry("Bulk modulus",
+                      "2.13e9",
+                      Patterns::Double(0),
+                      "K_f in Pa (> 0); water 2.13e9. A weakly compressible "
+                      "value (sound speed >= 10x the flow speed) is the "
+                      "largest speed lever.");
+    prm.declare_entry("Viscosity",
+                      "8.9e-4",
+                      Patterns::Double(0),
+                      "Dynamic viscosity mu in Pa s (>= 0); water 8.9e-4.");
+    prm.declare_entry("Pressure law",
+                      "linear",
+                      Patterns::Selection("linear|power"),
+                      "linear: p = -K_f (J - 1), Eq. (16); power: p = "
+                      "(K_f/kappa)((rho/rho_ref)^kappa - 1), Eq. (15).");
+    prm.declare_entry("Power-law exponent",
+                      "7",
+                      Patterns::Double(0),
+                      "kappa of the power law (> 0).");
+    prm.declare_entry("Allow tension",
+                      "false",
+                      Patterns::Bool(),
+                      "Whether the pressure may become negative (tension); "
+                      "if false it is cut off at zero.");
+    prm.leave_subsection();
+  }
+
+
+
+  std::unique_ptr<NewtonianFluid>
+  NewtonianFluid::create(ParameterHandler  &prm,
+                         const double       density,
+                         const std::string &path)
+  {
+    prm.enter_subsection("Newtonian fluid");
+    const double K   = prm.get_double("Bulk modulus");
+    const double mu  = prm.get_double("Viscosity");
+    const auto   law = prm.get("Pressure law") == "linear" ? PressureLaw::linear
+                                                           : PressureLaw::power;
+    const double kappa = prm.get_double("Power-law exponent");
+    const bool   allow = prm.get_bool("Allow tension");
+    prm.leave_subsection();
+    AssertThrow(K > 0,
+                ExcMessage(path
+                           + "/Newtonian fluid/Bulk modulus must be "
+                             "positive."));
+    AssertThrow(law == PressureLaw::linear || kappa > 0,
+                ExcMessage(path
+                           + "/Newtonian fluid/Power-law exponent must "
+                             "be positive."));
+    return std::make_unique<NewtonianFluid>(K, mu, density, law, kappa, allow);
+  }
+
+
+
+  double
+  NewtonianFluid::pressure(const double J) const
+  {
+    return law == PressureLaw::linear ? -K * (J - 1.)
+                                      : K / kappa * (std::pow(J, -kappa) - 1.);
+  }
+
+
+
+  double
+  NewtonianFluid::volume_ratio_for_pressure(const double p) const
+  {
+    return law == PressureLaw::linear
+             ? 1. - p / K
+             : std::pow(1. + kappa * p / K, -1. / kappa);
+  }
+
+
+
+  void
+  NewtonianFluid::update_stresses(const PointKinematics *kin,
+                                  SymmetricTensor<2, 3> *stress,
+                                  const unsigned int     n,
+                                  const double /*dt*/) const
+  {
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        double p = pressure(kin[i].volume_ratio);
+        if (!allow_tension)
+          p = std::max(p, 0.);
+        // Eq. (13): sigma = -p I + 2 mu dev(d).
+        stress[i] = 2. * mu * deviator(kin[i].strain_rate)
+                    - p * unit_symmetric_tensor<3>();
+      }
+  }
+
+
+
+  double
+  NewtonianFluid::wave_speed(const double rho) const
+  {
+    // Tangent bulk modulus dp/dJ * (-J): K (linear), K J^-kappa (power).
+    const double J  = density / rho;
+    const double Kt = law == PressureLaw::linear ? K : K * std::pow(J, -kappa);
+    return std::sqrt(Kt / rho);
+  }
+
+
+
+  double
+  NewtonianFluid::strain_energy_density(const SymmetricTensor<2, 3> &s) const
+  {
+    // Stored compression energy p^2/(2K) of the linear law.
+    const double p = -trace(s) / 3.;
+    return 0.5 * p * p / K;
+  }
+} // namespace fsgmpm

@@ -1,0 +1,89 @@
+#include <fsgmpm/step/cell_loops.h>
+#include <fsgmpm/step/stages.h>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    template <int dim>
+    void
+    average_nodal_pressure(const BackgroundGrid<dim>          &grid,
+                           const NodalFields<dim>             &nodes,
+                           const std::vector<MaterialOptions> &options,
+                           SmoothingFields<dim>               &smoothing,
+                           ParticleStore<dim>                 &particles)
+    {
+      bool any = false;
+      for (unsigned int m = 0; m < options.size(); ++m)
+        if (options[m].anp)
+          {
+            smoothing.reset(m, nodes.active_nodes);
+            any = true;
+          }
+      if (!any)
+        return;
+
+      // Eq. (29): p_i = sum_e sum_p p_p w_p / sum_e sum_p w_p over the cells
+      // attached to node i, w_p the point volumes, per material, without
+      // the free-surface points.
+      CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
+        for (unsigned int p = particles.cell_start[c];
+             p < particles.cell_start[c + 1];
+             ++p)
+          {
+            const unsigned int m = particles.material_id[p];
+            if (!options[m].anp || particles.free_surface[p])
+              continue;
+            const double pV
+              = -trace(particles.stress[p]) / 3. * particles.volume[p];
+            for (const unsigned int i : grid.cell_nodes[c])
+              {
+                smoothing.numerator[m][i] += pV;
+                smoothing.denominator[m][i] += particles.volume[p];
+              }
+          }
+      });
+
+      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
+        for (unsigned int p = particles.cell_start[c];
+             p < particles.cell_start[c + 1];
+             ++p)
+          {
+            const unsigned int m = particles.material_id[p];
+            if (!options[m].anp || particles.free_surface[p])
+              continue;
+            double p_bar = 0;
+            if (options[m].anp_interpolate)
+              {
+                const auto lambda = grid.barycentric(c, particles.position[p]);
+                for (unsigned int k = 0; k < dim + 1; ++k)
+                  p_bar
+                    += lambda[k] * smoothing.average(m, grid.cell_nodes[c][k]);
+              }
+            else
+              {
+                for (const unsigned int i : grid.cell_nodes[c])
+                  p_bar += smoothing.average(m, i);
+                p_bar /= (dim + 1);
+              }
+            // Eq. (28): deviatoric part kept, spherical part averaged.
+            particles.stress[p] = deviator(particles.stress[p])
+                                  - p_bar * unit_symmetric_tensor<3>();
+          }
+      });
+    }
+
+    template void
+    average_nodal_pressure<2>(const BackgroundGrid<2> &,
+                              const NodalFields<2> &,
+                              const std::vector<MaterialOptions> &,
+                              SmoothingFields<2> &,
+                              ParticleStore<2> &);
+    template void
+    average_nodal_pressure<3>(const BackgroundGrid<3> &,
+                              const NodalFields<3> &,
+                              const std::vector<MaterialOptions> &,
+                              SmoothingFields<3> &,
+                              ParticleStore<3> &);
+  } // namespace Stages
+} // namespace fsgmpm
