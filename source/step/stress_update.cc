@@ -91,9 +91,11 @@ namespace fsgmpm
               }
             // Volume (and so density) with the same volumetric rate as the
             // pressure.
-            particles.volume[p] *= std::exp(dt * trace(kin.strain_rate));
-            kin.volume_ratio
-              = particles.volume[p] / particles.reference_volume[p];
+            const double J = materials[m]->admissible_volume_ratio(
+              particles.volume[p] * std::exp(dt * trace(kin.strain_rate))
+              / particles.reference_volume[p]);
+            particles.volume[p] = J * particles.reference_volume[p];
+            kin.volume_ratio    = J;
           }
 
         // One call per run of points of the same material.

@@ -74,6 +74,15 @@ namespace fsgmpm
       return 1.;
     }
 
+    /// The admissible volume ratio for a trial J (after the volume update):
+    /// a fluid that cannot carry tension cannot expand beyond its reference
+    /// volume either (no energy-free expansion at zero pressure).
+    virtual double
+    admissible_volume_ratio(const double J) const
+    {
+      return J;
+    }
+
     /// Whether the material is a fluid (free-surface detection applies).
     virtual bool
     is_fluid() const

@@ -5,6 +5,7 @@
 
 #include <fsgmpm/materials/material.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace fsgmpm
@@ -76,6 +77,12 @@ namespace fsgmpm
 
     double
     volume_ratio_for_pressure(const double pressure) const override;
+
+    double
+    admissible_volume_ratio(const double J) const override
+    {
+      return allow_tension ? J : std::min(J, 1.);
+    }
 
     bool
     is_fluid() const override

@@ -1,0 +1,159 @@
+// Collapse of a water column, n^2 = 2, at ctest size (20 cells across
+// w0 = 0.114 m, prm/water_column_collapse_n2.prm) with a weakly compressible
+// K_f = 2.5 MPa (sound speed 50 m/s, more than 10x the flow speed), against
+// Martin & Moyce (1952) in their normalisation: front Z = z/a against
+// T = t sqrt(2g/a) over the tabulated T <= 3.3, residual height
+// H = eta/(2a) against tau = t sqrt(g/a) over tau <= 3.
+//
+// Default suite (label scene): without time shift, height RMS <= 0.06; the
+// front RMS <= 0.1 after the best constant delay of the simulation, which
+// must be at most 30 ms (the experiment's gate, not modelled, delays its
+// start); the delay and the unshifted RMS are reported.
+// Validation (label validation): the criterion without shift, front
+// RMS <= 0.3. Measured 0.306-0.321 over mesh, particles per cell, Courant
+// number and f_c (doc/water_validation.md): the model without a gate leads
+// the experiment; this test documents that and fails until it is resolved.
+
+#include <fsgmpm/simulator.h>
+#include <gtest/gtest.h>
+
+#include "test_utilities.h"
+
+#include <fstream>
+#include <sstream>
+
+using namespace fsgmpm;
+
+namespace
+{
+  // Piecewise-linear interpolation of (t, v) samples at time x.
+  double
+  interpolate(const std::vector<std::pair<double, double>> &s, const double x)
+  {
+    if (x <= s.front().first)
+      return s.front().second;
+    for (unsigned int i = 1; i < s.size(); ++i)
+      if (x <= s[i].first)
+        return s[i - 1].second
+               + (s[i].second - s[i - 1].second) * (x - s[i - 1].first)
+                   / (s[i].first - s[i - 1].first);
+    return s.back().second;
+  }
+} // namespace
+
+namespace
+{
+  struct Errors
+  {
+    double       z_rms, h_rms, z_rms_shifted, shift;
+    unsigned int lost;
+  };
+
+  Errors
+  run_n2()
+  {
+    const double a = 0.114, g = 9.81;
+    auto         prm = test_tools::make_parameters("");
+    prm->parse_input(std::string(FSGMPM_TEST_SOURCE_DIR)
+                     + "/../prm/water_column_collapse_n2.prm");
+    prm->enter_subsection("Bodies");
+    prm->enter_subsection("Body 0");
+    prm->enter_subsection("Newtonian fluid");
+    prm->set("Bulk modulus", "2.5e6");
+    prm->leave_subsection();
+    prm->leave_subsection();
+    prm->leave_subsection();
+    Simulator<2> sim(*prm);
+    EXPECT_EQ(sim.get_scene_monitor_names(),
+              (std::vector<std::string>{"front_position", "column_height"}));
+
+    std::vector<std::pair<double, double>> front, height;
+    auto                                   record = [&] {
+      const auto v = sim.get_scene_monitors();
+      front.emplace_back(sim.get_time() * std::sqrt(2 * g / a), v[0] / a);
+      height.emplace_back(sim.get_time() * std::sqrt(g / a), v[1] / (2 * a));
+    };
+    record();
+    while (sim.advance())
+      if (sim.get_step() % 20 == 0)
+        record();
+    record();
+    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+
+    std::ifstream in(std::string(FSGMPM_TEST_SOURCE_DIR)
+                     + "/reference/martin_moyce_1952_n2.csv");
+    EXPECT_TRUE(in.good());
+    std::string                            line;
+    double                                 z_sum = 0, h_sum = 0;
+    unsigned                               z_n = 0, h_n = 0;
+    std::vector<std::pair<double, double>> front_reference;
+    while (std::getline(in, line))
+      {
+        if (line.empty() || line[0] == '#' || line.rfind("series", 0) == 0)
+          continue;
+        std::istringstream s(line);
+        std::string        series, t, v;
+        std::getline(s, series, ',');
+        std::getline(s, t, ',');
+        std::getline(s, v, ',');
+        const double time = std::stod(t), value = std::stod(v);
+        if (series == "front" && time <= 3.3 + 1e-9)
+          {
+            z_sum += std::pow(interpolate(front, time) - value, 2);
+            ++z_n;
+            front_reference.emplace_back(time, value);
+          }
+        if (series == "height" && time <= 3.0 + 1e-9)
+          {
+            h_sum += std::pow(interpolate(height, time) - value, 2);
+            ++h_n;
+          }
+      }
+    Errors e;
+    e.z_rms = std::sqrt(z_sum / z_n);
+    e.h_rms = std::sqrt(h_sum / h_n);
+    e.lost  = sim.get_monitors().lost_particles;
+    // Best constant delay s >= 0 of the simulation: Z_sim(T - s) vs Z_exp(T).
+    e.z_rms_shifted = e.z_rms;
+    e.shift         = 0;
+    for (double shift = 0; shift <= 1.0; shift += 0.005)
+      {
+        double sum = 0;
+        for (const auto &[T, Z] : front_reference)
+          sum += std::pow(interpolate(front, std::max(0., T - shift)) - Z, 2);
+        const double rms = std::sqrt(sum / front_reference.size());
+        if (rms < e.z_rms_shifted)
+          {
+            e.z_rms_shifted = rms;
+            e.shift         = shift;
+          }
+      }
+    std::cout << "[ measured ] n^2 = 2, 20 cells across w0, K_f = 2.5 MPa: "
+              << sim.get_particles().size() << " points, " << sim.get_step()
+              << " steps; front RMS error in Z = " << e.z_rms << " (" << z_n
+              << " points; " << e.z_rms_shifted
+              << " with the simulation delayed by T = " << e.shift << ", i.e. "
+              << 1e3 * e.shift / std::sqrt(2 * g / a)
+              << " ms), height RMS error in H = " << e.h_rms << " (" << h_n
+              << " points), lost " << e.lost << std::endl;
+    return e;
+  }
+} // namespace
+
+TEST(WaterColumnCollapse, MartinMoyceN2)
+{
+  const Errors e = run_n2();
+  EXPECT_LE(e.h_rms, 0.06);
+  // The front's shape: within 0.1 after a gate-sized delay (at most 30 ms,
+  // T = 0.39).
+  EXPECT_LE(e.z_rms_shifted, 0.1);
+  EXPECT_LE(e.shift, 0.39);
+  EXPECT_EQ(e.lost, 0u);
+}
+
+TEST(WaterColumnCollapseValidation, MartinMoyceN2WithoutShift)
+{
+  const Errors e = run_n2();
+  EXPECT_LE(e.z_rms, 0.3);
+  EXPECT_LE(e.h_rms, 0.06);
+}
