@@ -12,6 +12,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/default_scene.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>
 
@@ -35,7 +36,8 @@ namespace
       "       fsgmpm --help | --version\n"
       "\n"
       "Runs the scene described by the parameter file (without one, the\n"
-      "built-in default scene: an elastic block dropping onto the ground).\n"
+      "built-in default scene prm/default_dam_break.prm: a coarse collapse\n"
+      "of a water column, real water, about half a minute).\n"
       "Output (VTU/PVD, monitors.csv, summary.json) goes to Output/Directory.\n"
       "\n"
       "  --set \"Path/Name=value\"  override one parameter after reading the\n"
@@ -63,22 +65,20 @@ namespace
     std::vector<std::string> parts = Utilities::split_string_list(path, '/');
     const std::string        name  = parts.back();
     parts.pop_back();
-    try
-      {
-        prm.get(parts, name);
-      }
-    catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage("--set: there is no parameter <" + path
-                               + ">. Run fsgmpm --print-parameters for the "
-                                 "full list."));
-      }
     for (const auto &s : parts)
       prm.enter_subsection(s);
     try
       {
         prm.set(name, value);
+      }
+    catch (ParameterHandler::ExcEntryUndeclared &)
+      {
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          prm.leave_subsection();
+        AssertThrow(false,
+                    ExcMessage("--set: there is no parameter <" + path
+                               + ">. Run fsgmpm --print-parameters for the "
+                                 "full list."));
       }
     catch (ExceptionBase &e)
       {
@@ -221,6 +221,8 @@ main(int argc, char **argv)
                                  + ">."));
           prm.parse_input(prm_file);
         }
+      else
+        prm.parse_input_from_string(fsgmpm::default_scene_prm);
       for (const auto &o : overrides)
         apply_override(prm, o);
 

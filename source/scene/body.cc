@@ -6,6 +6,8 @@
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 
+#include <sstream>
+
 namespace fsgmpm
 {
   template <int dim>
@@ -165,9 +167,23 @@ namespace fsgmpm
         else
           {
             if constexpr (dim == 2)
-              body.shape = std::make_unique<PolygonShape>(
-                parse_polygon(prm.get("Polygon vertices"),
-                              body.path + "/Polygon vertices"));
+              {
+                const auto vertices
+                  = parse_polygon(prm.get("Polygon vertices"),
+                                  body.path + "/Polygon vertices");
+                try
+                  {
+                    body.shape = std::make_unique<PolygonShape>(vertices);
+                  }
+                catch (ExceptionBase &e)
+                  {
+                    std::ostringstream info;
+                    e.print_info(info);
+                    AssertThrow(false,
+                                ExcMessage(body.path + "/Polygon vertices: "
+                                           + Utilities::trim(info.str())));
+                  }
+              }
             else
               AssertThrow(false,
                           ExcMessage(body.path

@@ -42,10 +42,13 @@ subsection Simulation
 end
 PRM
 expect_error "unknown parameter in prm" "End tme" unknown.prm
-expect_error "unknown parameter in --set" "Simulation/End tme" --set "Simulation/End tme=1"
-expect_error "unknown subsection in --set" "Simulaton/End time" --set "Simulaton/End time=1"
+expect_error "unknown parameter in --set" "no parameter <Simulation/End tme>" --set "Simulation/End tme=1"
+expect_error "unknown subsection in --set" "no parameter <Simulaton/End time>" --set "Simulaton/End time=1"
 expect_error "negative density" "Bodies/Body 0/Density|Density" --set "Bodies/Body 0/Density=-1000"
-expect_error "nu = 0.5" "Poisson's ratio" --set "Bodies/Body 0/Linear elastic/Poisson's ratio=0.5"
+expect_error "nu = 0.5" "Poisson's ratio" "$2/../prm/elastic_block_drop.prm" --set "Bodies/Body 0/Linear elastic/Poisson's ratio=0.5"
+expect_error "f_c = 1" "Free surface threshold" --set "Bodies/Body 0/Free surface threshold=1"
+expect_error "negative bulk modulus" "Bulk modulus" --set "Bodies/Body 0/Newtonian fluid/Bulk modulus=-2e9"
+expect_error "unknown material" "Material model" --set "Bodies/Body 0/Material model=honey"
 expect_error "body outside the mesh" "Body 0.*outside the background mesh" --set "Bodies/Body 0/Box upper corner=1.5, 0.4"
 expect_error "missing mesh file" "no_such_mesh.msh" --set "Grid/Type=gmsh" --set "Grid/Mesh file=no_such_mesh.msh"
 expect_error "missing prm file" "no_such_file.prm" no_such_file.prm
@@ -53,7 +56,7 @@ expect_error "Courant number > 1" "Courant number" --set "Simulation/Courant num
 expect_error "bad wall type" "Grid/Boundary conditions" --set "Grid/Boundary conditions=0: sticky"
 expect_error "wrong vector length" "Bodies/Body 0/Box lower corner" --set "Bodies/Body 0/Box lower corner=0.3"
 expect_error "bad particles per cell" "Particles per cell" --set "Bodies/Body 0/Particles per cell=5"
-expect_error "self-intersecting polygon" "intersects itself" --set "Bodies/Body 0/Shape=polygon" --set "Bodies/Body 0/Polygon vertices=0.3,0.2; 0.6,0.4; 0.6,0.2; 0.3,0.4"
+expect_error "self-intersecting polygon" "Bodies/Body 0/Polygon vertices: The polygon intersects itself" --set "Bodies/Body 0/Shape=polygon" --set "Bodies/Body 0/Polygon vertices=0.3,0.2; 0.6,0.4; 0.6,0.2; 0.3,0.4"
 expect_error "unknown option" "Unknown option" --frobnicate
 
 echo "bad input: $passed passed, $failures failed"

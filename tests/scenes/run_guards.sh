@@ -21,7 +21,8 @@ check() { # check <name> <command...>: the command must succeed
 }
 no_nan() { ! grep -qi "nan" "$1"/monitors.csv && ! grep -qi '"nan"\|NaN' "$1"/summary.json; }
 
-common=(--set "Output/Quiet=true" --set "Simulation/End time=0.3")
+scene="$2/prm/elastic_block_drop.prm"
+common=("$scene" --set "Output/Quiet=true" --set "Simulation/End time=0.3")
 
 "$exe" "${common[@]}" --set "Simulation/Number of threads=1" --set "Output/Directory=t1"
 "$exe" "${common[@]}" --set "Simulation/Number of threads=2" --set "Output/Directory=t2"
