@@ -57,7 +57,7 @@ def main():
     parser.add_argument("output")
     parser.add_argument("runs", nargs="+")
     parser.add_argument("--reference", default=os.path.join(
-        here, "..", "..", "..", "shared", "reference", "martin_moyce_1952_n2.csv"))
+        here, "..", "..", "tests", "reference", "martin_moyce_1952_n2.csv"))
     parser.add_argument("--w0", type=float, default=0.114)
     parser.add_argument("--g", type=float, default=9.81)
     parser.add_argument("--n2", type=float, default=2.0)
