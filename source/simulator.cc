@@ -28,6 +28,7 @@ namespace fsgmpm
       grid_update_stage,
       g2p_stage,
       remap_stage,
+      nmd_stage,
       stress_update_stage,
       free_surface_stage,
       anp_stage,
@@ -59,6 +60,7 @@ namespace fsgmpm
                                                    "grid_update",
                                                    "g2p",
                                                    "remap",
+                                                   "velocity_gradient_nmd",
                                                    "stress_update",
                                                    "free_surface",
                                                    "anp",
@@ -414,6 +416,10 @@ namespace fsgmpm
     if (params.use_musl)
       timed(remap_stage,
             [&] { Stages::remap(*grid, particles, *constraints, nodes); });
+    timed(nmd_stage, [&] {
+      Stages::velocity_gradients(*grid, nodes, smoothing, particles);
+      Stages::nmd(*grid, nodes, material_options, smoothing, particles);
+    });
     timed(stress_update_stage, [&] {
       Stages::stress_update(
         *grid, nodes, materials, material_options, dt, smoothing, particles);

@@ -18,44 +18,8 @@ namespace fsgmpm
                   SmoothingFields<dim>                         &smoothing,
                   ParticleStore<dim>                           &particles)
     {
-      // Linear simplices: grad v is constant in a cell.
-      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        Tensor<2, dim> L;
-        for (unsigned int k = 0; k < dim + 1; ++k)
-          L += outer_product(nodes.velocity[grid.cell_nodes[c][k]],
-                             grid.shape_gradients[c][k]);
-        smoothing.velocity_gradient[c] = L;
-      });
-
-      // NMD, Eq. (24): nodal volumetric strain rate, averaged over the
-      // attached non-empty cells with the volumes of the material's points
-      // as weights (per material).
-      bool any_nmd = false;
-      for (unsigned int m = 0; m < options.size(); ++m)
-        if (options[m].nmd)
-          {
-            smoothing.reset(m, nodes.active_nodes);
-            any_nmd = true;
-          }
-      if (any_nmd)
-        CellLoops::scatter_by_colour(
-          grid, particles, [&](const unsigned int c) {
-            const double rate = trace(smoothing.velocity_gradient[c]);
-            for (unsigned int p = particles.cell_start[c];
-                 p < particles.cell_start[c + 1];
-                 ++p)
-              {
-                const unsigned int m = particles.material_id[p];
-                if (!options[m].nmd)
-                  continue;
-                for (const unsigned int i : grid.cell_nodes[c])
-                  {
-                    smoothing.numerator[m][i] += particles.volume[p] * rate;
-                    smoothing.denominator[m][i] += particles.volume[p];
-                  }
-              }
-          });
-
+      // Uses smoothing.velocity_gradient (velocity_gradients stage) and,
+      // for NMD materials, the nodal rates of the nmd stage.
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         const Tensor<2, dim> &L = smoothing.velocity_gradient[c];
         Tensor<2, 3>          L3;

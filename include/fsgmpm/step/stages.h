@@ -18,8 +18,9 @@ namespace fsgmpm
    * The explicit MPM step as a fixed sequence of named stages (paper Fig. 1,
    * Eqs. 17-21). A stage knows nothing about the scene; the Simulator calls
    *
-   *   MUSL (default):  p2g -> grid_update -> g2p -> remap -> stress_update
-   *                    (with NMD) -> detect_free_surface
+   *   MUSL (default):  p2g -> grid_update -> g2p -> remap
+   *                    -> velocity_gradients -> nmd -> stress_update
+   *                    -> detect_free_surface
    *                    -> average_nodal_pressure -> update_positions
    *                    -> relocate
    *   USL:             the same without remap
@@ -75,10 +76,30 @@ namespace fsgmpm
           const NodalConstraints<dim> &constraints,
           NodalFields<dim>            &nodes);
 
-    /// Stage 5a: velocity gradient (constant per cell on linear simplices),
-    /// strain rate and spin, NMD (Eqs. 22-25) for the materials that use
-    /// it, the volume update V <- V exp(dt tr d) with the same (smoothed)
-    /// rate, and the stress update per material.
+    /// Stage 5a: the velocity gradient of every occupied cell (constant on
+    /// linear simplices), from the (remapped) nodal velocities.
+    template <int dim>
+    void
+    velocity_gradients(const BackgroundGrid<dim> &grid,
+                       const NodalFields<dim>    &nodes,
+                       SmoothingFields<dim>      &smoothing,
+                       const ParticleStore<dim>  &particles);
+
+    /// Stage 5b, NMD (Eq. 24): nodal volumetric strain rates, averaged over
+    /// the attached non-empty cells with the volumes of each material's
+    /// points as weights, for the materials that use NMD.
+    template <int dim>
+    void
+    nmd(const BackgroundGrid<dim>          &grid,
+        const NodalFields<dim>             &nodes,
+        const std::vector<MaterialOptions> &options,
+        SmoothingFields<dim>               &smoothing,
+        const ParticleStore<dim>           &particles);
+
+    /// Stage 5c: per point, strain rate and spin with the NMD correction of
+    /// Eq. (25) (cell-centre mean of the nodal rates), the volume update
+    /// V <- V exp(dt tr d) with the same rate (limited by the material's
+    /// admissible volume ratio), and the stress update per material.
     template <int dim>
     void
     stress_update(const BackgroundGrid<dim>                    &grid,
@@ -89,7 +110,7 @@ namespace fsgmpm
                   SmoothingFields<dim>                         &smoothing,
                   ParticleStore<dim>                           &particles);
 
-    /// Stage 5b (paper Section 4, volume-fraction form): flag the points of
+    /// Stage 5d (paper Section 4, volume-fraction form): flag the points of
     /// detecting materials whose interpolated nodal volume fraction is at
     /// most f_c; flagged points get zero pressure and their reference
     /// volume. Returns the number of flagged points.
@@ -101,7 +122,7 @@ namespace fsgmpm
                         SmoothingFields<dim>               &smoothing,
                         ParticleStore<dim>                 &particles);
 
-    /// Stage 5c, ANP (Eqs. 28-29): nodal volume-weighted average of the
+    /// Stage 5e, ANP (Eqs. 28-29): nodal volume-weighted average of the
     /// pressure of the non-flagged points per material, mapped back as the
     /// element mean (paper) or interpolated.
     template <int dim>

@@ -1,0 +1,88 @@
+#include <fsgmpm/step/cell_loops.h>
+#include <fsgmpm/step/stages.h>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    template <int dim>
+    void
+    velocity_gradients(const BackgroundGrid<dim> &grid,
+                       const NodalFields<dim>    &nodes,
+                       SmoothingFields<dim>      &smoothing,
+                       const ParticleStore<dim>  &particles)
+    {
+      // Linear simplices: grad v is constant in a cell.
+      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
+        Tensor<2, dim> L;
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          L += outer_product(nodes.velocity[grid.cell_nodes[c][k]],
+                             grid.shape_gradients[c][k]);
+        smoothing.velocity_gradient[c] = L;
+      });
+    }
+
+
+
+    template <int dim>
+    void
+    nmd(const BackgroundGrid<dim>          &grid,
+        const NodalFields<dim>             &nodes,
+        const std::vector<MaterialOptions> &options,
+        SmoothingFields<dim>               &smoothing,
+        const ParticleStore<dim>           &particles)
+    {
+      // NMD, Eq. (24): nodal volumetric strain rate, averaged over the
+      // attached non-empty cells with the volumes of the material's points
+      // as weights (per material).
+      bool any_nmd = false;
+      for (unsigned int m = 0; m < options.size(); ++m)
+        if (options[m].nmd)
+          {
+            smoothing.reset(m, nodes.active_nodes);
+            any_nmd = true;
+          }
+      if (any_nmd)
+        CellLoops::scatter_by_colour(
+          grid, particles, [&](const unsigned int c) {
+            const double rate = trace(smoothing.velocity_gradient[c]);
+            for (unsigned int p = particles.cell_start[c];
+                 p < particles.cell_start[c + 1];
+                 ++p)
+              {
+                const unsigned int m = particles.material_id[p];
+                if (!options[m].nmd)
+                  continue;
+                for (const unsigned int i : grid.cell_nodes[c])
+                  {
+                    smoothing.numerator[m][i] += particles.volume[p] * rate;
+                    smoothing.denominator[m][i] += particles.volume[p];
+                  }
+              }
+          });
+    }
+
+    template void
+    velocity_gradients<2>(const BackgroundGrid<2> &,
+                          const NodalFields<2> &,
+                          SmoothingFields<2> &,
+                          const ParticleStore<2> &);
+    template void
+    velocity_gradients<3>(const BackgroundGrid<3> &,
+                          const NodalFields<3> &,
+                          SmoothingFields<3> &,
+                          const ParticleStore<3> &);
+    template void
+    nmd<2>(const BackgroundGrid<2> &,
+           const NodalFields<2> &,
+           const std::vector<MaterialOptions> &,
+           SmoothingFields<2> &,
+           const ParticleStore<2> &);
+    template void
+    nmd<3>(const BackgroundGrid<3> &,
+           const NodalFields<3> &,
+           const std::vector<MaterialOptions> &,
+           SmoothingFields<3> &,
+           const ParticleStore<3> &);
+  } // namespace Stages
+} // namespace fsgmpm
