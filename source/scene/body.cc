@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/materials/linear_elastic.h>
+#include <fsgmpm/materials/mohr_coulomb.h>
 #include <fsgmpm/materials/newtonian_fluid.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
@@ -65,7 +66,8 @@ namespace fsgmpm
                           "means z = 0.");
         prm.declare_entry("Material model",
                           "linear elastic",
-                          Patterns::Selection("linear elastic|Newtonian fluid"),
+                          Patterns::Selection(
+                            "linear elastic|Mohr-Coulomb|Newtonian fluid"),
                           "Constitutive model of the body.");
         prm.declare_entry("Volumetric smoothing",
                           "default",
@@ -106,6 +108,7 @@ namespace fsgmpm
                           "Lateral stress ratio for Initial stress = "
                           "geostatic.");
         LinearElastic::declare_parameters(prm);
+        MohrCoulomb::declare_parameters(prm);
         NewtonianFluid::declare_parameters(prm);
         prm.leave_subsection();
       }
@@ -224,6 +227,8 @@ namespace fsgmpm
         const std::string model = prm.get("Material model");
         if (model == "linear elastic")
           body.material = LinearElastic::create(prm, body.density, body.path);
+        else if (model == "Mohr-Coulomb")
+          body.material = MohrCoulomb::create(prm, body.density, body.path);
         else
           body.material = NewtonianFluid::create(prm, body.density, body.path);
 
