@@ -151,7 +151,12 @@ namespace fsgmpm
     update_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles));
     compute_monitors();
-    previous_kinetic_energy = monitors.kinetic_energy;
+    previous_kinetic_energy  = monitors.kinetic_energy;
+    initial_potential_energy = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      initial_potential_energy
+        -= particles.mass[p]
+           * (params.gravity * (particles.position[p] - grid->lower_corner));
     energy_history.clear();
     energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                                monitors.external_work}});
@@ -488,6 +493,15 @@ namespace fsgmpm
     if (!ok)
       return false;
 
+    max_kinetic_energy = std::max(max_kinetic_energy, monitors.kinetic_energy);
+    if (params.stop_when_at_rest
+        && max_kinetic_energy > params.rest_tolerance * initial_potential_energy
+        && monitors.kinetic_energy
+             < params.rest_tolerance * initial_potential_energy)
+      {
+        termination = "at_rest";
+        return false;
+      }
     if (params.stop_when_converged
         && converged_steps >= params.convergence_window)
       {

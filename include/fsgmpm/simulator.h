@@ -198,6 +198,9 @@ namespace fsgmpm
     unsigned int step = 0;
     Monitors     monitors;
     double       previous_kinetic_energy = 0;
+    /// Potential energy above the mesh's lowest point at the start, and the
+    /// largest kinetic energy so far (Termination = at_rest).
+    double initial_potential_energy = 0, max_kinetic_energy = 0;
     unsigned int converged_steps         = 0;
     std::string  termination             = "end_time";
     std::string  diagnosis;

@@ -16,11 +16,15 @@ namespace fsgmpm
     prm.declare_entry("Scene monitors",
                       "",
                       Patterns::MultipleSelection(
-                        "front_position|column_height"),
+                        "front_position|column_height|runout|final_height"),
                       "Extra columns of monitors.csv: front_position (surge "
                       "front from the wall, bottom cell row) and "
                       "column_height (height at the wall), both from the "
-                      "non-flagged points plus half a point spacing (m).");
+                      "non-flagged points plus half a point spacing; "
+                      "runout (largest x from the wall where the deposit is "
+                      "at least one point spacing thick) and final_height "
+                      "(highest point above the base plus half a spacing) "
+                      "(m).");
     prm.declare_entry("Wall position",
                       "auto",
                       Patterns::Anything(),
@@ -101,15 +105,19 @@ namespace fsgmpm
   std::vector<double>
   SceneMonitors<dim>::evaluate(const ParticleStore<dim> &particles) const
   {
-    double front = 0, height = 0;
+    double front = 0, height = 0, runout = 0, top = 0;
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
-        if (particles.free_surface[p])
-          continue;
         const double half_spacing
           = 0.5 * std::pow(particles.volume[p], 1. / dim);
         const double x = particles.position[p][0] - wall_x;
         const double y = particles.position[p][1] - base_y;
+        // A point resting on the base makes the deposit one spacing thick.
+        if (y + half_spacing >= 2 * half_spacing * (1 - 1e-3))
+          runout = std::max(runout, x + half_spacing);
+        top = std::max(top, y + half_spacing);
+        if (particles.free_surface[p])
+          continue;
         if (y < row_height)
           front = std::max(front, x + half_spacing);
         if (x < column_width)
@@ -117,7 +125,10 @@ namespace fsgmpm
       }
     std::vector<double> values;
     for (const auto &name : columns)
-      values.push_back(name == "front_position" ? front : height);
+      values.push_back(name == "front_position"  ? front
+                       : name == "column_height" ? height
+                       : name == "runout"        ? runout
+                                                 : top);
     return values;
   }
 

@@ -26,9 +26,24 @@ namespace fsgmpm
         prm.enter_subsection("Body " + std::to_string(b));
         prm.declare_entry("Shape",
                           "box",
-                          Patterns::Selection("box|ellipse|polygon"),
-                          "Region the body fills initially: box, ellipse "
-                          "(ellipsoid in 3D) or polygon (2D only).");
+                          Patterns::Selection("box|column|ellipse|polygon"),
+                          "Region the body fills initially: box, column (a "
+                          "box given by its base corner, width and aspect "
+                          "ratio), ellipse (ellipsoid in 3D) or polygon (2D "
+                          "only).");
+        prm.declare_entry("Column base corner",
+                          "0, 0",
+                          Patterns::List(Patterns::Double()),
+                          "Shape = column: lower corner (m); in 3D the depth "
+                          "is that of Box lower/upper corner.");
+        prm.declare_entry("Column width",
+                          "0.2",
+                          Patterns::Double(0),
+                          "Shape = column: width L0 in x (m, > 0).");
+        prm.declare_entry("Column aspect ratio",
+                          "1",
+                          Patterns::Double(0),
+                          "Shape = column: a = H0/L0 (> 0).");
         prm.declare_entry("Box lower corner",
                           "0.3, 0.2",
                           Patterns::List(Patterns::Double()),
@@ -161,6 +176,25 @@ namespace fsgmpm
                              body.path + "/Box lower corner"),
             parse_point<dim>(prm.get("Box upper corner"),
                              body.path + "/Box upper corner"));
+        else if (shape == "column")
+          {
+            const Point<dim> base
+              = parse_point<dim>(prm.get("Column base corner"),
+                                 body.path + "/Column base corner");
+            const double width = prm.get_double("Column width");
+            const double a     = prm.get_double("Column aspect ratio");
+            AssertThrow(width > 0 && a > 0,
+                        ExcMessage(body.path
+                                   + ": Column width and Column aspect ratio "
+                                     "must be positive."));
+            Point<dim> upper = base;
+            upper[0] += width;
+            upper[1] += a * width;
+            if (dim == 3)
+              upper[2] = parse_point<dim>(prm.get("Box upper corner"),
+                                          body.path + "/Box upper corner")[2];
+            body.shape = std::make_unique<BoxShape<dim>>(base, upper);
+          }
         else if (shape == "ellipse")
           body.shape = std::make_unique<EllipseShape<dim>>(
             parse_point<dim>(prm.get("Ellipse center"),

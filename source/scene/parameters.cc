@@ -95,10 +95,19 @@ namespace fsgmpm
                         "Gravity grows linearly from 0 over this time (s).");
       prm.declare_entry("Termination",
                         "end_time",
-                        Patterns::Selection("end_time|dr_converged"),
+                        Patterns::Selection("end_time|dr_converged|at_rest"),
                         "end_time: run to End time; dr_converged: stop "
                         "earlier when both Eq. (30) ratios stay below their "
-                        "tolerances for the convergence window.");
+                        "tolerances for the convergence window; at_rest: "
+                        "stop when, after moving, the kinetic energy falls "
+                        "below Rest tolerance times the initial potential "
+                        "energy (above the mesh's lowest point).");
+      prm.declare_entry("Rest tolerance",
+                        "1e-6",
+                        Patterns::Double(0),
+                        "Termination = at_rest: kinetic energy / initial "
+                        "potential energy below which the material is at "
+                        "rest.");
       prm.declare_entry("Number of threads",
                         "0",
                         Patterns::Integer(0),
@@ -249,6 +258,8 @@ namespace fsgmpm
     gravity   = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     gravity_ramp_time   = prm.get_double("Gravity ramp time");
     stop_when_converged = (prm.get("Termination") == "dr_converged");
+    stop_when_at_rest   = (prm.get("Termination") == "at_rest");
+    rest_tolerance      = prm.get_double("Rest tolerance");
     n_threads           = prm.get_integer("Number of threads");
     prm.leave_subsection();
     AssertThrow(end_time > 0,

@@ -41,6 +41,8 @@ namespace fsgmpm
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
     bool           stop_when_converged;
+    bool           stop_when_at_rest;
+    double         rest_tolerance;
     unsigned int   n_threads;
 
     // Damping and dynamic relaxation (Eq. 30)
