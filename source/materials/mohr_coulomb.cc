@@ -216,9 +216,12 @@ namespace fsgmpm
 
 
   double
-  MohrCoulomb::wave_speed(const double rho) const
+  MohrCoulomb::wave_speed(const double /*rho*/) const
   {
-    return std::sqrt((K + 4. / 3. * mu) / rho);
+    // With the reference density: conservative under compression, and a
+    // solid that has come apart (volume grown at the apex) does not carry
+    // faster waves.
+    return std::sqrt((K + 4. / 3. * mu) / density);
   }
 
 
