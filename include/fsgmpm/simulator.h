@@ -200,9 +200,9 @@ namespace fsgmpm
     double       previous_kinetic_energy = 0;
     /// Potential energy above the mesh's lowest point at the start, and the
     /// largest kinetic energy so far (Termination = at_rest).
-    double initial_potential_energy = 0, max_kinetic_energy = 0;
-    unsigned int converged_steps         = 0;
-    std::string  termination             = "end_time";
+    double       initial_potential_energy = 0, max_kinetic_energy = 0;
+    unsigned int converged_steps = 0;
+    std::string  termination     = "end_time";
     std::string  diagnosis;
     /// (kinetic+strain energy, external work) of the last window of steps.
     std::deque<std::array<double, 2>> energy_history;

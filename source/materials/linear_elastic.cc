@@ -10,12 +10,8 @@ namespace fsgmpm
   LinearElastic::LinearElastic(const double E,
                                const double nu,
                                const double density)
-    : E(E)
-    , nu(nu)
-    , density(density)
-    , lambda(E * nu / ((1 + nu) * (1 - 2 * nu)))
-    , mu(E / (2 * (1 + nu)))
-    , K(E / (3 * (1 - 2 * nu)))
+    : density(density)
+    , elasticity(E, nu)
   {}
 
 
@@ -70,16 +66,7 @@ namespace fsgmpm
                                  const double           dt) const
   {
     for (unsigned int i = 0; i < n; ++i)
-      {
-        const SymmetricTensor<2, 3> &d   = kin[i].strain_rate;
-        const double                 trd = trace(d);
-        const SymmetricTensor<2, 3>  rotated
-          = rotate_stress(stress[i], kin[i].rotation);
-        stress[i] = rotated
-                    + dt
-                        * (lambda * trd * unit_symmetric_tensor<3>()
-                           + 2 * mu * d - trd * rotated);
-      }
+      stress[i] = elasticity.hill_predictor(stress[i], kin[i], dt);
   }
 
 
@@ -87,10 +74,8 @@ namespace fsgmpm
   double
   LinearElastic::wave_speed(const double /*rho*/) const
   {
-    // With the reference density: conservative under compression, and a
-    // solid that has come apart (volume grown at the apex) does not carry
-    // faster waves.
-    return std::sqrt((K + 4. / 3. * mu) / density);
+    // With the reference density: conservative under compression.
+    return std::sqrt(elasticity.p_wave_modulus() / density);
   }
 
 
@@ -98,8 +83,6 @@ namespace fsgmpm
   double
   LinearElastic::strain_energy_density(const SymmetricTensor<2, 3> &s) const
   {
-    const double tr = trace(s);
-    // eps = (1+nu)/E s - nu/E tr(s) I
-    return 0.5 * ((1 + nu) / E * (s * s) - nu / E * tr * tr);
+    return elasticity.strain_energy_density(s);
   }
 } // namespace fsgmpm

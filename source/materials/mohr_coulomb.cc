@@ -27,12 +27,8 @@ namespace fsgmpm
                            const double psi,
                            const double c,
                            const double density)
-    : E(E)
-    , nu(nu)
-    , density(density)
-    , lambda(E * nu / ((1 + nu) * (1 - 2 * nu)))
-    , mu(E / (2 * (1 + nu)))
-    , K(E / (3 * (1 - 2 * nu)))
+    : density(density)
+    , elasticity(E, nu)
     , yield{std::sin(phi * degree), 2 * c * std::cos(phi * degree)}
     , potential{std::sin(psi * degree), 0.}
     , apex(phi > 0 ? c / std::tan(phi * degree)
@@ -104,9 +100,8 @@ namespace fsgmpm
   MohrCoulomb::elastic(const std::array<double, 3> &v) const
   {
     const double tr = v[0] + v[1] + v[2];
-    return {{lambda * tr + 2 * mu * v[0],
-             lambda * tr + 2 * mu * v[1],
-             lambda * tr + 2 * mu * v[2]}};
+    const double l = elasticity.lambda, m2 = 2 * elasticity.mu;
+    return {{l * tr + m2 * v[0], l * tr + m2 * v[1], l * tr + m2 * v[2]}};
   }
 
 
@@ -198,19 +193,10 @@ namespace fsgmpm
   {
     Return kind;
     for (unsigned int i = 0; i < n; ++i)
-      {
-        const SymmetricTensor<2, 3> &d   = kin[i].strain_rate;
-        const double                 trd = trace(d);
-        const SymmetricTensor<2, 3>  rotated
-          = rotate_stress(stress[i], kin[i].rotation);
-        // Elastic predictor with the Hill rate, then the return mapping.
-        const SymmetricTensor<2, 3> trial
-          = rotated
-            + dt
-                * (lambda * trd * unit_symmetric_tensor<3>() + 2 * mu * d
-                   - trd * rotated);
-        stress[i] = return_mapping(trial, kind);
-      }
+      // Elastic predictor with the Hill rate, then the return mapping.
+      stress[i]
+        = return_mapping(elasticity.hill_predictor(stress[i], kin[i], dt),
+                         kind);
   }
 
 
@@ -221,7 +207,7 @@ namespace fsgmpm
     // With the reference density: conservative under compression, and a
     // solid that has come apart (volume grown at the apex) does not carry
     // faster waves.
-    return std::sqrt((K + 4. / 3. * mu) / density);
+    return std::sqrt(elasticity.p_wave_modulus() / density);
   }
 
 
@@ -229,7 +215,6 @@ namespace fsgmpm
   double
   MohrCoulomb::strain_energy_density(const SymmetricTensor<2, 3> &s) const
   {
-    const double tr = trace(s);
-    return 0.5 * ((1 + nu) / E * (s * s) - nu / E * tr * tr);
+    return elasticity.strain_energy_density(s);
   }
 } // namespace fsgmpm

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fsgmpm/materials/isotropic_elasticity.h>
 #include <fsgmpm/materials/material.h>
 
 namespace fsgmpm
@@ -51,7 +52,8 @@ namespace fsgmpm
       return density;
     }
 
-    const double E, nu, density, lambda, mu, K;
+    const double              density;
+    const IsotropicElasticity elasticity;
   };
 } // namespace fsgmpm
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fsgmpm/materials/isotropic_elasticity.h>
 #include <fsgmpm/materials/material.h>
 
 #include <array>
@@ -109,9 +110,10 @@ namespace fsgmpm
     double
     yield_function(const SymmetricTensor<2, 3> &stress) const;
 
-    const double             E, nu, density, lambda, mu, K;
-    const MohrCoulombSurface yield, potential;
-    const double             apex; ///< c cot(phi) (infinite for phi = 0)
+    const double              density;
+    const IsotropicElasticity elasticity;
+    const MohrCoulombSurface  yield, potential;
+    const double              apex; ///< c cot(phi) (infinite for phi = 0)
 
   private:
     /// Elastic matrix in principal space times a vector.
