@@ -68,7 +68,7 @@ end
   }
 
   // The same dam break in 3D: a slab of 0.057 m depth with slip faces,
-  // 8 points per tetrahedron, 122 880 points.
+  // 8 points per tetrahedron, 320 000 points.
   std::string
   dam_break_scene_3d()
   {
