@@ -148,7 +148,7 @@ namespace fsgmpm
   {
     particles.sort_by_cell(grid->n_cells());
     Stages::p2g(*grid, particles, nodes);
-    update_free_surface_fraction(Stages::detect_free_surface(
+    set_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles));
     compute_monitors();
     previous_kinetic_energy  = monitors.kinetic_energy;
@@ -199,10 +199,8 @@ namespace fsgmpm
                 const double syy = body.density * params.gravity[1]
                                    * (y_top - particles.position[p][1]);
                 SymmetricTensor<2, 3> s;
-                s[0][0] = s[2][2] = k * syy;
-                s[1][1]           = syy;
-                if (dim == 3)
-                  s[2][2] = k * syy;
+                s[0][0] = s[2][2]   = k * syy;
+                s[1][1]             = syy;
                 particles.stress[p] = s;
                 // A fluid carries this pressure at a compressed volume.
                 particles.volume[p]
@@ -225,18 +223,6 @@ namespace fsgmpm
     if (params.gravity_ramp_time > 0 && time < params.gravity_ramp_time)
       return params.gravity * (time / params.gravity_ramp_time);
     return params.gravity;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::update_free_surface_fraction(const unsigned int n_flagged)
-  {
-    unsigned int n = 0;
-    for (unsigned int p = 0; p < particles.size(); ++p)
-      n += material_options[particles.material_id[p]].detect_free_surface;
-    monitors.free_surface_fraction = n > 0 ? double(n_flagged) / n : 0.;
   }
 
 
@@ -430,7 +416,7 @@ namespace fsgmpm
         *grid, nodes, materials, material_options, dt, smoothing, particles);
     });
     timed(free_surface_stage, [&] {
-      update_free_surface_fraction(Stages::detect_free_surface(
+      set_free_surface_fraction(Stages::detect_free_surface(
         *grid, nodes, material_options, smoothing, particles));
     });
     timed(anp_stage, [&] {
@@ -493,11 +479,16 @@ namespace fsgmpm
     if (!ok)
       return false;
 
+    // At rest: after it has moved, the kinetic energy stays below the
+    // tolerance for the convergence window (a single step at a turning
+    // point of a bounce is not rest).
     max_kinetic_energy = std::max(max_kinetic_energy, monitors.kinetic_energy);
-    if (params.stop_when_at_rest
-        && max_kinetic_energy > params.rest_tolerance * initial_potential_energy
-        && monitors.kinetic_energy
-             < params.rest_tolerance * initial_potential_energy)
+    const double rest_energy = params.rest_tolerance * initial_potential_energy;
+    rest_steps               = (max_kinetic_energy > rest_energy
+                  && monitors.kinetic_energy < rest_energy)
+                                 ? rest_steps + 1
+                                 : 0;
+    if (params.stop_when_at_rest && rest_steps >= params.convergence_window)
       {
         termination = "at_rest";
         return false;

@@ -172,8 +172,13 @@ namespace fsgmpm
     setup_bodies();
     void
     compute_monitors();
+    /// (flagged, detecting) points from Stages::detect_free_surface.
     void
-    update_free_surface_fraction(const unsigned int n_flagged);
+    set_free_surface_fraction(const std::pair<unsigned int, unsigned int> &n)
+    {
+      monitors.free_surface_fraction
+        = n.second > 0 ? double(n.first) / n.second : 0.;
+    }
     bool
     check_stability(const double displacement_ratio);
     void
@@ -201,6 +206,7 @@ namespace fsgmpm
     /// Potential energy above the mesh's lowest point at the start, and the
     /// largest kinetic energy so far (Termination = at_rest).
     double       initial_potential_energy = 0, max_kinetic_energy = 0;
+    unsigned int rest_steps      = 0;
     unsigned int converged_steps = 0;
     std::string  termination     = "end_time";
     std::string  diagnosis;

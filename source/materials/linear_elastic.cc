@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fsgmpm/materials/hill_rotation.h>
 #include <fsgmpm/materials/linear_elastic.h>
 
 #include <cmath>

@@ -99,9 +99,10 @@ namespace fsgmpm
                         "end_time: run to End time; dr_converged: stop "
                         "earlier when both Eq. (30) ratios stay below their "
                         "tolerances for the convergence window; at_rest: "
-                        "stop when, after moving, the kinetic energy falls "
+                        "stop when, after moving, the kinetic energy stays "
                         "below Rest tolerance times the initial potential "
-                        "energy (above the mesh's lowest point).");
+                        "energy (above the mesh's lowest point) for "
+                        "Damping/Convergence window steps.");
       prm.declare_entry("Rest tolerance",
                         "1e-6",
                         Patterns::Double(0),

@@ -6,7 +6,7 @@ namespace fsgmpm
   namespace Stages
   {
     template <int dim>
-    unsigned int
+    std::pair<unsigned int, unsigned int>
     detect_free_surface(const BackgroundGrid<dim>          &grid,
                         const NodalFields<dim>             &nodes,
                         const std::vector<MaterialOptions> &options,
@@ -17,7 +17,7 @@ namespace fsgmpm
       for (const auto &o : options)
         any = any || o.detect_free_surface;
       if (!any)
-        return 0;
+        return {0, 0};
 
       // phi_i = sum_p N_i(x_p) V_p / Vbar_i, Vbar_i the lumped volume of the
       // node's non-empty cells: the volume-fraction form of Eqs. (31)-(33),
@@ -52,7 +52,8 @@ namespace fsgmpm
         if (vol[i] > 0)
           phi[i] /= vol[i];
 
-      std::vector<unsigned int> flagged(particles.occupied_cells.size(), 0);
+      std::vector<std::pair<unsigned int, unsigned int>> flagged(
+        particles.occupied_cells.size(), {0, 0});
       CellLoops::parallel_range(
         particles.occupied_cells.size(),
         [&](const unsigned int b, const unsigned int e) {
@@ -66,6 +67,7 @@ namespace fsgmpm
                   const MaterialOptions &o = options[particles.material_id[p]];
                   if (!o.detect_free_surface)
                     continue;
+                  ++flagged[ci].second;
                   const auto lambda
                     = grid.barycentric(c, particles.position[p]);
                   double phi_p = 0;
@@ -78,27 +80,30 @@ namespace fsgmpm
                       // Zero pressure, volume back to the reference state.
                       particles.stress[p] = deviator(particles.stress[p]);
                       particles.volume[p] = particles.reference_volume[p];
-                      ++flagged[ci];
+                      ++flagged[ci].first;
                     }
                 }
             }
         },
         16);
-      unsigned int n = 0;
-      for (const unsigned int f : flagged)
-        n += f;
+      std::pair<unsigned int, unsigned int> n = {0, 0};
+      for (const auto &f : flagged)
+        {
+          n.first += f.first;
+          n.second += f.second;
+        }
       return n;
     }
 
 
 
-    template unsigned int
+    template std::pair<unsigned int, unsigned int>
     detect_free_surface<2>(const BackgroundGrid<2> &,
                            const NodalFields<2> &,
                            const std::vector<MaterialOptions> &,
                            SmoothingFields<2> &,
                            ParticleStore<2> &);
-    template unsigned int
+    template std::pair<unsigned int, unsigned int>
     detect_free_surface<3>(const BackgroundGrid<3> &,
                            const NodalFields<3> &,
                            const std::vector<MaterialOptions> &,

@@ -113,9 +113,9 @@ namespace fsgmpm
     /// Stage 5d (paper Section 4, volume-fraction form): flag the points of
     /// detecting materials whose interpolated nodal volume fraction is at
     /// most f_c; flagged points get zero pressure and their reference
-    /// volume. Returns the number of flagged points.
+    /// volume. Returns the numbers of flagged and of detecting points.
     template <int dim>
-    unsigned int
+    std::pair<unsigned int, unsigned int>
     detect_free_surface(const BackgroundGrid<dim>          &grid,
                         const NodalFields<dim>             &nodes,
                         const std::vector<MaterialOptions> &options,
