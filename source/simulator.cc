@@ -3,8 +3,11 @@
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/grid_output.h>
+#include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
+#include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_filler.h>
+#include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/simulator.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
@@ -123,8 +126,6 @@ namespace fsgmpm
 
     constraints = std::make_unique<NodalConstraints<dim>>(*grid, params.walls);
     nodes.resize(grid->n_nodes());
-    setup_bodies();
-    smoothing.resize(materials.size(), grid->n_nodes(), grid->n_cells());
 
     Point<dim> cell_size;
     for (unsigned int d = 0; d < dim; ++d)
@@ -133,9 +134,17 @@ namespace fsgmpm
                            / params.subdivisions[std::min<unsigned int>(
                              d, params.subdivisions.size() - 1)]
                        : grid->max_altitude_global;
+    setup_membrane(prm, cell_size);
+    setup_bodies();
+    smoothing.resize(materials.size(), grid->n_nodes(), grid->n_cells());
+
     scene_monitors = std::make_unique<SceneMonitors<dim>>(prm,
                                                           grid->lower_corner,
                                                           cell_size);
+    AssertThrow(!scene_monitors->needs_membrane() || membrane,
+                ExcMessage("Monitors/Scene monitors names a membrane column "
+                           "(height, width, contact_width, ...), but "
+                           "Membrane/Enabled is false."));
 
     reinitialize_state();
   }
@@ -148,6 +157,8 @@ namespace fsgmpm
   {
     particles.sort_by_cell(grid->n_cells());
     Stages::p2g(*grid, particles, nodes);
+    if (membrane)
+      Stages::membrane_p2g(*grid, *membrane, nodes);
     set_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles));
     compute_monitors();
@@ -171,12 +182,72 @@ namespace fsgmpm
 
   template <int dim>
   void
+  Simulator<dim>::setup_membrane(ParameterHandler &prm,
+                                 const Point<dim> &cell_size)
+  {
+    const MembraneDescription<dim> description(prm);
+    if (!description.enabled)
+      {
+        for (const auto &body : bodies)
+          AssertThrow(!body.fills_membrane,
+                      ExcMessage(body.path
+                                 + "/Shape = membrane needs a membrane "
+                                   "(Membrane/Enabled = true)."));
+        return;
+      }
+    const double h = cell_size[0];
+    membrane_z_range
+      = {grid->lower_corner[dim - 1], grid->upper_corner[dim - 1]};
+    if (description.shape != "gmsh")
+      membrane_outline = description.outline(h);
+    else
+      for (const auto &body : bodies)
+        AssertThrow(!body.fills_membrane,
+                    ExcMessage(body.path
+                               + "/Shape = membrane needs a membrane given "
+                                 "as an ellipse or polygon."));
+
+    Triangulation<dim - 1, dim> mesh;
+    description.make_mesh(h, membrane_z_range, mesh);
+    membrane = std::make_unique<Membrane<dim>>(mesh, description.properties);
+    AssertThrow(dim == 3 || membrane->is_closed_loop(),
+                ExcMessage("The membrane must be one closed loop."));
+    membrane_split_length = description.split_fraction * h;
+
+    const PointLocator<dim> locator(*grid);
+    for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
+      {
+        membrane->cell[a] = locator.locate(membrane->position[a], 0);
+        AssertThrow(membrane->cell[a] != BackgroundGrid<dim>::invalid,
+                    ExcMessage("Membrane node " + std::to_string(a) + " at "
+                               + to_string(membrane->position[a])
+                               + " lies outside the mesh; move or shrink "
+                                 "the membrane (subsection Membrane) or "
+                                 "enlarge the grid."));
+      }
+    AssertThrow(membrane->max_element_length()
+                    <= membrane_split_length * (1 + 1e-9)
+                  || dim == 2,
+                ExcMessage("Membrane elements are longer than Membrane/"
+                           "Split length grid cells; use a finer membrane "
+                           "mesh."));
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::setup_bodies()
   {
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         BodyDescription<dim> &body  = bodies[b];
         const unsigned int    first = particles.size();
+        if (body.fills_membrane)
+          body.shape
+            = std::make_unique<CrossSectionShape<dim>>(membrane_outline,
+                                                       membrane_z_range.first,
+                                                       membrane_z_range.second);
         fill_body(*grid,
                   *body.shape,
                   body.particles_per_cell,
@@ -264,6 +335,13 @@ namespace fsgmpm
         ke += q[0];
         se += q[1];
         pe += q[2];
+      }
+    if (membrane)
+      {
+        ke += membrane->kinetic_energy();
+        se += membrane->strain_energy();
+        for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
+          pe -= membrane->mass[a] * (params.gravity * membrane->position[a]);
       }
     monitors.kinetic_energy   = ke;
     monitors.strain_energy    = se;
@@ -362,10 +440,32 @@ namespace fsgmpm
         return false;
       }
 
+    // P2G first: the membrane's nodal time-step bound needs the nodal
+    // masses (p2g does not depend on dt).
+    timed(p2g_stage, [&] {
+      Stages::p2g(*grid, particles, nodes);
+      if (membrane)
+        Stages::membrane_p2g(*grid, *membrane, nodes);
+    });
+
     double dt_stable = 0;
     timed(time_step_stage, [&] {
       dt_stable
         = Stages::stable_time_step(*grid, particles, materials, params.courant);
+      if (membrane)
+        {
+          // Combined bound 1/dt^2 = 1/dt_points^2 + 1/dt_membrane^2.
+          const double dt_m
+            = params.courant
+              * Stages::membrane_time_step(*grid,
+                                           *membrane,
+                                           nodes,
+                                           params.mass_scaling
+                                             ? dt_stable / params.courant
+                                             : 0.);
+          dt_stable
+            = 1. / std::sqrt(1. / (dt_stable * dt_stable) + 1. / (dt_m * dt_m));
+        }
     });
     if (params.fixed_dt > 0)
       {
@@ -396,17 +496,21 @@ namespace fsgmpm
     const Tensor<1, dim>     gravity = current_gravity();
     Stages::GridUpdateResult grid_result;
     double                   displacement_ratio = 0;
-    unsigned int             lost               = 0;
+    unsigned int             lost = 0, membrane_outside = 0;
 
-    timed(p2g_stage, [&] { Stages::p2g(*grid, particles, nodes); });
     timed(grid_update_stage, [&] {
       grid_result = Stages::grid_update(
         *constraints, gravity, params.local_damping, dt, nodes);
     });
-    timed(g2p_stage, [&] { Stages::g2p(*grid, nodes, dt, particles); });
+    timed(g2p_stage, [&] {
+      Stages::g2p(*grid, nodes, dt, particles);
+      if (membrane)
+        Stages::membrane_g2p(*grid, nodes, *membrane);
+    });
     if (params.use_musl)
-      timed(remap_stage,
-            [&] { Stages::remap(*grid, particles, *constraints, nodes); });
+      timed(remap_stage, [&] {
+        Stages::remap(*grid, particles, *constraints, nodes, membrane.get());
+      });
     timed(nmd_stage, [&] {
       Stages::velocity_gradients(*grid, nodes, smoothing, particles);
       Stages::nmd(*grid, nodes, material_options, smoothing, particles);
@@ -426,9 +530,28 @@ namespace fsgmpm
     timed(position_stage, [&] {
       displacement_ratio
         = Stages::update_positions(*grid, nodes, dt, particles);
+      if (membrane)
+        displacement_ratio
+          = std::max(displacement_ratio,
+                     Stages::membrane_positions(*grid, nodes, dt, *membrane));
     });
     if (std::isfinite(displacement_ratio))
-      timed(relocate_stage, [&] { lost = Stages::relocate(*grid, particles); });
+      timed(relocate_stage, [&] {
+        lost = Stages::relocate(*grid, particles);
+        if (membrane)
+          membrane_outside = Stages::membrane_relocate(*grid,
+                                                       membrane_split_length,
+                                                       *membrane);
+      });
+    if (membrane_outside > 0)
+      {
+        termination = "error";
+        diagnosis   = std::to_string(membrane_outside)
+                    + " membrane node(s) left the mesh at step "
+                    + std::to_string(step)
+                    + "; enlarge the grid or check the walls.";
+        return false;
+      }
 
     particle_updates += particles.size();
     time += dt;
@@ -524,6 +647,12 @@ namespace fsgmpm
         });
         particle_series->write_pvd();
       }
+    if (membrane)
+      {
+        const std::string name = membrane_series->next_file(time);
+        write_membrane_vtu(*membrane, dir + "/" + name);
+        membrane_series->write_pvd();
+      }
     if (params.write_grid)
       {
         const std::string name = grid_series->next_file(time);
@@ -552,6 +681,8 @@ namespace fsgmpm
 
     particle_series = std::make_unique<PvdSeries>(dir, "particles");
     grid_series     = std::make_unique<PvdSeries>(dir, "grid");
+    membrane_series = std::make_unique<PvdSeries>(dir, "membrane");
+    fs::remove(fs::path(dir) / "membrane_shape.csv");
     // Common columns (SPEC 6), the free-surface fraction where a body
     // detects free surfaces, then the scene's own columns.
     bool detecting = false;
@@ -588,13 +719,13 @@ namespace fsgmpm
                                  double(monitors.lost_particles)};
       if (detecting)
         row.push_back(monitors.free_surface_fraction);
-      for (const double v : scene_monitors->evaluate(particles))
+      for (const double v : scene_monitors->evaluate(particles, membrane.get()))
         row.push_back(v);
       monitor_file->write_row(row);
     };
     const bool interval_output = params.output_interval > 0;
     const bool any_output
-      = (params.write_particles || params.write_grid)
+      = (params.write_particles || params.write_grid || membrane)
         && (interval_output || params.output_every_steps > 0);
     write_monitor_row();
     if (any_output)
@@ -650,6 +781,8 @@ namespace fsgmpm
     const double wall
       = std::chrono::duration<double>(Clock::now() - start).count();
     monitor_file.reset();
+    if (membrane)
+      write_membrane_shape_csv(*membrane, dir + "/membrane_shape.csv");
     write_summary(wall);
     if (!params.quiet)
       {

@@ -9,6 +9,7 @@
 #include <fsgmpm/io/particle_output.h>
 #include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/materials/material.h>
+#include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
@@ -104,7 +105,13 @@ namespace fsgmpm
     std::vector<double>
     get_scene_monitors() const
     {
-      return scene_monitors->evaluate(particles);
+      return scene_monitors->evaluate(particles, membrane.get());
+    }
+    /// The membrane, or nullptr if the scene has none.
+    const Membrane<dim> *
+    get_membrane() const
+    {
+      return membrane.get();
     }
     const std::vector<std::string> &
     get_scene_monitor_names() const
@@ -169,6 +176,8 @@ namespace fsgmpm
 
   private:
     void
+    setup_membrane(ParameterHandler &prm, const Point<dim> &cell_size);
+    void
     setup_bodies();
     void
     compute_monitors();
@@ -198,6 +207,13 @@ namespace fsgmpm
     std::vector<MaterialOptions>           material_options;
     SmoothingFields<dim>                   smoothing;
     std::unique_ptr<SceneMonitors<dim>>    scene_monitors;
+    /// The geomembrane (FEM-MPM coupling), if the scene has one; cables
+    /// longer than membrane_split_length are split.
+    std::unique_ptr<Membrane<dim>> membrane;
+    double                         membrane_split_length = 0;
+    /// The outline the bodies with Shape = membrane fill (x-y, z range).
+    std::vector<Point<2>>     membrane_outline;
+    std::pair<double, double> membrane_z_range;
 
     double       time = 0, dt = 0, dt_min = 0, dt_max = 0;
     unsigned int step = 0;
@@ -216,7 +232,7 @@ namespace fsgmpm
     std::vector<double>          stage_seconds;
     std::unique_ptr<MonitorFile> monitor_file;
     ParticleOutput<dim>          particle_output;
-    std::unique_ptr<PvdSeries>   particle_series, grid_series;
+    std::unique_ptr<PvdSeries>   particle_series, grid_series, membrane_series;
     double                       next_output_time = 0;
     unsigned long long           particle_updates = 0;
   };

@@ -1,7 +1,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/scene_monitors.h>
+
+#include <algorithm>
+#include <map>
 
 #include <cmath>
 #include <limits>
@@ -16,7 +20,10 @@ namespace fsgmpm
     prm.declare_entry("Scene monitors",
                       "",
                       Patterns::MultipleSelection(
-                        "front_position|column_height|runout|final_height"),
+                        "front_position|column_height|runout|final_height|"
+                        "height|width|contact_width|max_tension|mean_tension|"
+                        "top_pressure|bottom_pressure|membrane_length|"
+                        "enclosed_area|fluid_volume|particles_outside"),
                       "Extra columns of monitors.csv: front_position (surge "
                       "front from the wall, bottom cell row) and "
                       "column_height (height at the wall), both from the "
@@ -24,7 +31,15 @@ namespace fsgmpm
                       "runout (largest x from the wall where the deposit is "
                       "at least one point spacing thick) and final_height "
                       "(highest point above the base plus half a spacing) "
-                      "(m).");
+                      "(m). With a membrane: height, width (max - min of the "
+                      "membrane nodes), contact_width (extent of the nodes "
+                      "within Contact tolerance of the lowest one), "
+                      "max_tension, mean_tension (N/m), top_pressure, "
+                      "bottom_pressure (Pa; least-squares line of the "
+                      "particle pressure against y in the central strip, at "
+                      "the membrane's top and bottom), membrane_length, "
+                      "enclosed_area, fluid_volume and particles_outside "
+                      "(points outside the closed membrane, 2D).");
     prm.declare_entry("Wall position",
                       "auto",
                       Patterns::Anything(),
@@ -44,6 +59,17 @@ namespace fsgmpm
                       Patterns::Anything(),
                       "Width of the strip at the wall for column_height (m); "
                       "auto: the cell size in x.");
+    prm.declare_entry("Contact tolerance",
+                      "auto",
+                      Patterns::Anything(),
+                      "contact_width: membrane nodes at most this far above "
+                      "the lowest node touch the ground (m); auto: a tenth "
+                      "of the bottom row height.");
+    prm.declare_entry("Pressure strip width",
+                      "auto",
+                      Patterns::Anything(),
+                      "Width of the central strip for top_pressure and "
+                      "bottom_pressure (m); auto: two cells.");
     prm.leave_subsection();
   }
 
@@ -84,26 +110,50 @@ namespace fsgmpm
          Utilities::split_string_list(prm.get("Scene monitors"), ','))
       if (!name.empty())
         columns.push_back(name);
-    wall_x       = auto_or_value(prm.get("Wall position"),
+    wall_x            = auto_or_value(prm.get("Wall position"),
                            lower[0],
                            "Monitors/Wall position");
-    base_y       = auto_or_value(prm.get("Base position"),
+    base_y            = auto_or_value(prm.get("Base position"),
                            lower[1],
                            "Monitors/Base position");
-    row_height   = auto_or_value(prm.get("Row height"),
+    row_height        = auto_or_value(prm.get("Row height"),
                                cell_size[1],
                                "Monitors/Row height");
-    column_width = auto_or_value(prm.get("Column width"),
+    column_width      = auto_or_value(prm.get("Column width"),
                                  cell_size[0],
                                  "Monitors/Column width");
+    contact_tolerance = auto_or_value(prm.get("Contact tolerance"),
+                                      0.1 * cell_size[1],
+                                      "Monitors/Contact tolerance");
+    strip_width       = auto_or_value(prm.get("Pressure strip width"),
+                                2 * cell_size[0],
+                                "Monitors/Pressure strip width");
     prm.leave_subsection();
+    AssertThrow(contact_tolerance >= 0 && strip_width > 0,
+                ExcMessage("Monitors/Contact tolerance must be >= 0 and "
+                           "Monitors/Pressure strip width > 0."));
+  }
+
+
+
+  template <int dim>
+  bool
+  SceneMonitors<dim>::needs_membrane() const
+  {
+    for (const auto &name : columns)
+      if (std::count(membrane_monitor_names().begin(),
+                     membrane_monitor_names().end(),
+                     name))
+        return true;
+    return false;
   }
 
 
 
   template <int dim>
   std::vector<double>
-  SceneMonitors<dim>::evaluate(const ParticleStore<dim> &particles) const
+  SceneMonitors<dim>::evaluate(const ParticleStore<dim> &particles,
+                               const Membrane<dim>      *membrane) const
   {
     double front = 0, height = 0, runout = 0, top = 0;
     for (unsigned int p = 0; p < particles.size(); ++p)
@@ -123,13 +173,23 @@ namespace fsgmpm
         if (x < column_width)
           height = std::max(height, y + half_spacing);
       }
-    std::vector<double> values;
+    std::map<std::string, double> values = {{"front_position", front},
+                                            {"column_height", height},
+                                            {"runout", runout},
+                                            {"final_height", top}};
+    if (membrane != nullptr)
+      values.merge(membrane_monitors(
+        *membrane, particles, contact_tolerance, strip_width));
+    std::vector<double> row;
     for (const auto &name : columns)
-      values.push_back(name == "front_position"  ? front
-                       : name == "column_height" ? height
-                       : name == "runout"        ? runout
-                                                 : top);
-    return values;
+      {
+        const auto it = values.find(name);
+        AssertThrow(it != values.end(),
+                    ExcMessage("Monitors/Scene monitors: " + name
+                               + " needs a membrane (Membrane/Enabled)."));
+        row.push_back(it->second);
+      }
+    return row;
   }
 
   template class SceneMonitors<2>;

@@ -170,6 +170,50 @@ namespace fsgmpm
     return "polygon with " + std::to_string(vertices.size()) + " vertices";
   }
 
+  template <int dim>
+  CrossSectionShape<dim>::CrossSectionShape(const std::vector<Point<2>> &v,
+                                            const double                 z0,
+                                            const double                 z1)
+    : polygon(v)
+    , z0(z0)
+    , z1(z1)
+  {}
+
+  template <int dim>
+  bool
+  CrossSectionShape<dim>::inside(const Point<dim> &x) const
+  {
+    if (dim == 3 && (x[dim - 1] < z0 || x[dim - 1] > z1))
+      return false;
+    return polygon.inside(Point<2>(x[0], x[1]));
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  CrossSectionShape<dim>::outline_points() const
+  {
+    std::vector<Point<dim>> points;
+    for (const auto &p : polygon.outline_points())
+      {
+        Point<dim> q;
+        q[0] = p[0];
+        q[1] = p[1];
+        if (dim == 3)
+          q[dim - 1] = 0.5 * (z0 + z1);
+        points.push_back(q);
+      }
+    return points;
+  }
+
+  template <int dim>
+  std::string
+  CrossSectionShape<dim>::description() const
+  {
+    return "cross-section " + polygon.description();
+  }
+
+  template class CrossSectionShape<2>;
+  template class CrossSectionShape<3>;
   template class BoxShape<2>;
   template class BoxShape<3>;
   template class EllipseShape<2>;

@@ -26,11 +26,13 @@ namespace fsgmpm
         prm.enter_subsection("Body " + std::to_string(b));
         prm.declare_entry("Shape",
                           "box",
-                          Patterns::Selection("box|column|ellipse|polygon"),
+                          Patterns::Selection(
+                            "box|column|ellipse|polygon|membrane"),
                           "Region the body fills initially: box, column (a "
                           "box given by its base corner, width and aspect "
-                          "ratio), ellipse (ellipsoid in 3D) or polygon (2D "
-                          "only).");
+                          "ratio), ellipse (ellipsoid in 3D), polygon (2D "
+                          "only) or membrane (the inside of the closed "
+                          "membrane of subsection Membrane).");
         prm.declare_entry("Column base corner",
                           "0, 0",
                           Patterns::List(Patterns::Double()),
@@ -201,6 +203,8 @@ namespace fsgmpm
                              body.path + "/Ellipse center"),
             parse_vector<dim>(prm.get("Ellipse semi-axes"),
                               body.path + "/Ellipse semi-axes"));
+        else if (shape == "membrane")
+          body.fills_membrane = true; // the shape is set with the membrane
         else
           {
             if constexpr (dim == 2)

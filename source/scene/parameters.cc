@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/io/scene_monitors.h>
+#include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 
@@ -124,6 +125,14 @@ namespace fsgmpm
                         Patterns::Double(0, 1),
                         "alpha of local non-viscous damping F = -alpha "
                         "|F_unbalanced| sign(v), 0 <= alpha < 1.");
+      prm.declare_entry("Mass scaling",
+                        "false",
+                        Patterns::Bool(),
+                        "Dynamic relaxation: give grid nodes that a stiff "
+                        "membrane would make the time-step limit fictitious "
+                        "inertia (no weight, no momentum) so that the "
+                        "material points' limit governs; changes the motion "
+                        "but not the static state. Quasi-static runs only.");
       prm.declare_entry("Kinetic damping",
                         "false",
                         Patterns::Bool(),
@@ -189,6 +198,13 @@ namespace fsgmpm
                         Patterns::List(Patterns::Integer(1)),
                         "Type = box: number of squares/cubes per direction, "
                         "each split into 2 triangles (2D) or 5-6 tets (3D).");
+      prm.declare_entry("Cell size",
+                        "0",
+                        Patterns::Double(0),
+                        "Type = box or extruded box: if > 0, the square size "
+                        "(m) that sets Subdivisions (rounded to the nearest "
+                        "integer per direction); one parameter for mesh "
+                        "studies.");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -242,6 +258,7 @@ namespace fsgmpm
     prm.leave_subsection();
 
     BodyDescription<dim>::declare_parameters(prm);
+    MembraneDescription<dim>::declare_parameters(prm);
     SceneMonitors<dim>::declare_parameters(prm);
   }
 
@@ -273,6 +290,7 @@ namespace fsgmpm
     prm.enter_subsection("Damping");
     local_damping      = prm.get_double("Local damping coefficient");
     kinetic_damping    = prm.get_bool("Kinetic damping");
+    mass_scaling       = prm.get_bool("Mass scaling");
     energy_tolerance   = prm.get_double("Energy tolerance");
     force_tolerance    = prm.get_double("Force tolerance");
     convergence_window = prm.get_integer("Convergence window");
@@ -318,6 +336,19 @@ namespace fsgmpm
                                + prm.get("Subdivisions") + ">."));
         for (const auto &s : items)
           subdivisions.push_back(Utilities::string_to_int(s));
+        const double cell_size = prm.get_double("Cell size");
+        if (cell_size > 0)
+          for (unsigned int d = 0; d < box_dim; ++d)
+            {
+              subdivisions[d]
+                = std::max<long>(1,
+                                 std::lround((upper_corner[d] - lower_corner[d])
+                                             / cell_size));
+              AssertThrow(subdivisions[d] <= 100000,
+                          ExcMessage("Grid/Cell size is too small for the "
+                                     "box: more than 100000 cells per "
+                                     "direction."));
+            }
       }
     mesh_file = prm.get("Mesh file");
     AssertThrow(grid_type != "gmsh" || !mesh_file.empty(),

@@ -39,7 +39,8 @@ namespace fsgmpm
                 damping[d] = -alpha * std::abs(unbalanced[d])
                              * (v_old[d] > 0 ? 1. : -1.);
 
-          Tensor<1, dim> v_new = v_old + (dt / m) * (unbalanced + damping);
+          Tensor<1, dim> v_new
+            = v_old + (dt / (m + nodes.added_mass[i])) * (unbalanced + damping);
           constraints.apply(i, v_new);
           nodes.velocity[i]     = v_new;
           nodes.acceleration[i] = (v_new - v_old) / dt;

@@ -10,7 +10,8 @@ namespace fsgmpm
     remap(const BackgroundGrid<dim>   &grid,
           const ParticleStore<dim>    &particles,
           const NodalConstraints<dim> &constraints,
-          NodalFields<dim>            &nodes)
+          NodalFields<dim>            &nodes,
+          const Membrane<dim>         *membrane)
     {
       for (const unsigned int i : nodes.active_nodes)
         nodes.momentum[i] = Tensor<1, dim>();
@@ -29,6 +30,9 @@ namespace fsgmpm
           nodes.momentum[grid.cell_nodes[c][k]] += mv[k];
       });
 
+      if (membrane != nullptr)
+        membrane_remap(grid, *membrane, nodes);
+
       // Eq. (20) with the lumped mass matrix.
       for (const unsigned int i : nodes.active_nodes)
         if (nodes.mass[i] > 0)
@@ -42,11 +46,13 @@ namespace fsgmpm
     remap<2>(const BackgroundGrid<2> &,
              const ParticleStore<2> &,
              const NodalConstraints<2> &,
-             NodalFields<2> &);
+             NodalFields<2> &,
+             const Membrane<2> *);
     template void
     remap<3>(const BackgroundGrid<3> &,
              const ParticleStore<3> &,
              const NodalConstraints<3> &,
-             NodalFields<3> &);
+             NodalFields<3> &,
+             const Membrane<3> *);
   } // namespace Stages
 } // namespace fsgmpm

@@ -2,11 +2,11 @@
 // monitors on a case with a known answer: an elastic column (Shape =
 // column, width 0.4 m, aspect ratio 0.5, base at x = 0.3) standing
 // stress-free on a fixed floor, loaded by gravity and locally damped, comes
-// to rest as a block of the same size, so runout (from the wall x = 0) = 0.7 m and final_height =
-// 0.2 m up to the elastic settlement (rho g H / M < 2e-3 of H) and half a
-// point spacing (< 0.005 m); the run ends "at_rest" with a kinetic energy
-// below 1e-6 of the initial potential energy for the convergence window
-// (not at a single turning point of the bounce).
+// to rest as a block of the same size, so runout (from the wall x = 0) = 0.7 m
+// and final_height = 0.2 m up to the elastic settlement (rho g H / M < 2e-3 of
+// H) and half a point spacing (< 0.005 m); the run ends "at_rest" with a
+// kinetic energy below 1e-6 of the initial potential energy for the convergence
+// window (not at a single turning point of the bounce).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>

@@ -61,6 +61,12 @@ expect_error "zero column aspect ratio" "Bodies/Body 0: Column width and Column 
 expect_error "friction angle >= 90" "Friction angle" "$2/../prm/granular_column_collapse.prm" --set "Bodies/Body 0/Mohr-Coulomb/Friction angle=95"
 expect_error "dilatancy above friction" "Dilatancy angle must lie in" "$2/../prm/granular_column_collapse.prm" --set "Bodies/Body 0/Mohr-Coulomb/Dilatancy angle=40"
 expect_error "unknown option" "Unknown option" --frobnicate
+g="$2/../prm/geotube_A5.56.prm"
+expect_error "membrane area above the circle's" "Membrane/Circumference and Enclosed area: .*cannot enclose" "$g" --set "Membrane/Enclosed area=7"
+expect_error "membrane outside the mesh" "Membrane node .* lies outside the mesh" "$g" --set "Membrane/Lowest point=5.5, 0"
+expect_error "fill a missing membrane" "Shape = membrane needs a membrane" "$g" --set "Membrane/Enabled=false" --set "Monitors/Scene monitors="
+expect_error "self-intersecting membrane" "Membrane/Polygon vertices: The polygon intersects itself" "$g" --set "Membrane/Shape=polygon" --set "Membrane/Polygon vertices=1,1; 2,2; 2,1; 1,2"
+expect_error "zero membrane stiffness" "Axial stiffness" "$g" --set "Membrane/Axial stiffness=0"
 
 echo "bad input: $passed passed, $failures failed"
 [ $failures -eq 0 ]

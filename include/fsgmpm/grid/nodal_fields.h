@@ -26,6 +26,7 @@ namespace fsgmpm
       external_force.assign(n_nodes, Tensor<1, dim>());
       velocity.assign(n_nodes, Tensor<1, dim>());
       acceleration.assign(n_nodes, Tensor<1, dim>());
+      added_mass.assign(n_nodes, 0.);
       active_stamp.assign(n_nodes, 0u);
       active_nodes.clear();
       stamp = 0;
@@ -43,6 +44,7 @@ namespace fsgmpm
           external_force[i] = Tensor<1, dim>();
           velocity[i]       = Tensor<1, dim>();
           acceleration[i]   = Tensor<1, dim>();
+          added_mass[i]     = 0.;
         }
       active_nodes.clear();
       ++stamp;
@@ -72,6 +74,9 @@ namespace fsgmpm
     std::vector<Tensor<1, dim>> velocity;
     /// Constrained nodal acceleration a^n of Eq. (18).
     std::vector<Tensor<1, dim>> acceleration;
+    /// Fictitious inertia of dynamic relaxation (mass scaling): it slows
+    /// the node's acceleration but carries no weight and no momentum.
+    std::vector<double> added_mass;
 
     std::vector<unsigned int> active_nodes;
     std::vector<unsigned int> active_stamp;

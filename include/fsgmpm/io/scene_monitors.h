@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
 
 #include <string>
@@ -39,12 +40,20 @@ namespace fsgmpm
       return columns;
     }
 
+    /// The columns' values; the geotube columns (io/membrane_output.h)
+    /// need @p membrane.
     std::vector<double>
-    evaluate(const ParticleStore<dim> &particles) const;
+    evaluate(const ParticleStore<dim> &particles,
+             const Membrane<dim>      *membrane = nullptr) const;
+
+    /// True if a column needs a membrane.
+    bool
+    needs_membrane() const;
 
   private:
     std::vector<std::string> columns;
     double                   wall_x, base_y, row_height, column_width;
+    double                   contact_tolerance, strip_width;
   };
 } // namespace fsgmpm
 

@@ -79,6 +79,27 @@ namespace fsgmpm
   private:
     std::vector<Point<2>> vertices;
   };
+
+  /// A simple closed polygon in x-y, extruded along z in 3D (over the
+  /// given z range): the inside of a 2D membrane or of an extruded one.
+  template <int dim>
+  class CrossSectionShape : public BodyShape<dim>
+  {
+  public:
+    CrossSectionShape(const std::vector<Point<2>> &vertices,
+                      const double                 z0 = 0,
+                      const double                 z1 = 0);
+    bool
+    inside(const Point<dim> &x) const override;
+    std::vector<Point<dim>>
+    outline_points() const override;
+    std::string
+    description() const override;
+
+  private:
+    PolygonShape polygon;
+    double       z0, z1;
+  };
 } // namespace fsgmpm
 
 #endif

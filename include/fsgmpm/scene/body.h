@@ -21,10 +21,13 @@ namespace fsgmpm
   {
     std::string                     path; ///< "Bodies/Body N"
     std::unique_ptr<BodyShape<dim>> shape;
-    std::unique_ptr<Material>       material;
-    unsigned int                    particles_per_cell;
-    double                          density;
-    Tensor<1, dim>                  initial_velocity;
+    /// Shape = membrane: fills the inside of the scene's membrane (shape is
+    /// set once the membrane exists).
+    bool                      fills_membrane = false;
+    std::unique_ptr<Material> material;
+    unsigned int              particles_per_cell;
+    double                    density;
+    Tensor<1, dim>            initial_velocity;
     /// Initial stress: none; geostatic (sigma_yy = -rho g (y_top - y),
     /// sigma_xx = sigma_zz = K0 sigma_yy) from the body's top surface; or
     /// hydrostatic (pressure rho g (y_top - y); fluids also get the matching

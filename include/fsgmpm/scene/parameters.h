@@ -48,6 +48,7 @@ namespace fsgmpm
     // Damping and dynamic relaxation (Eq. 30)
     double       local_damping;
     bool         kinetic_damping;
+    bool         mass_scaling;
     double       energy_tolerance;
     double       force_tolerance;
     unsigned int convergence_window;

@@ -5,6 +5,7 @@
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/material.h>
+#include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/step/material_options.h>
 #include <fsgmpm/step/smoothing_fields.h>
@@ -67,14 +68,16 @@ namespace fsgmpm
         const double               dt,
         ParticleStore<dim>        &particles);
 
-    /// Stage 4 (Eq. 20): nodal velocities from the updated particle momenta,
-    /// with the wall conditions (suppresses the small-mass-node instability).
+    /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
+    /// membrane-node) momenta, with the wall conditions (suppresses the
+    /// small-mass-node instability).
     template <int dim>
     void
     remap(const BackgroundGrid<dim>   &grid,
           const ParticleStore<dim>    &particles,
           const NodalConstraints<dim> &constraints,
-          NodalFields<dim>            &nodes);
+          NodalFields<dim>            &nodes,
+          const Membrane<dim>         *membrane = nullptr);
 
     /// Stage 5a: the velocity gradient of every occupied cell (constant on
     /// linear simplices), from the (remapped) nodal velocities.
@@ -157,6 +160,67 @@ namespace fsgmpm
                      const ParticleStore<dim>                     &particles,
                      const std::vector<std::unique_ptr<Material>> &materials,
                      const double                                  courant);
+
+    // --- FEM-MPM membrane coupling (shared grid nodes) -------------------
+    // Membrane nodes take part in the transfers like material points, with
+    // shape values only: p2g after Stages::p2g, g2p after the grid update,
+    // their momentum in the remap, positions with the remapped velocities,
+    // and element forces from the new positions.
+
+    /// Stage 1m: mass, momentum and element forces of the membrane nodes to
+    /// the nodes of their cells (which become active).
+    template <int dim>
+    void
+    membrane_p2g(const BackgroundGrid<dim> &grid,
+                 const Membrane<dim>       &membrane,
+                 NodalFields<dim>          &nodes);
+
+    /// Nodal time-step bound of SPEC 2 with the membrane: min over grid
+    /// nodes of 2 sqrt(m_i / k_i), k_i the membrane stiffness projected to
+    /// node i (Gershgorin; the nodal mass includes the fluid's added mass).
+    /// Without the Courant factor.
+    /// If @p dt_floor > 0 (dynamic relaxation with mass scaling), nodes
+    /// whose bound would fall below dt_floor get the fictitious inertia
+    /// NodalFields::added_mass = k_i dt_floor^2 / 4 - m_i instead, and the
+    /// returned bound is at least dt_floor.
+    template <int dim>
+    double
+    membrane_time_step(const BackgroundGrid<dim> &grid,
+                       const Membrane<dim>       &membrane,
+                       NodalFields<dim>          &nodes,
+                       const double               dt_floor = 0);
+
+    /// Stage 3m: membrane-node velocities from the grid velocities (PIC).
+    template <int dim>
+    void
+    membrane_g2p(const BackgroundGrid<dim> &grid,
+                 const NodalFields<dim>    &nodes,
+                 Membrane<dim>             &membrane);
+
+    /// Stage 4m: the membrane nodes' momenta added to the remap (Eq. 20).
+    template <int dim>
+    void
+    membrane_remap(const BackgroundGrid<dim> &grid,
+                   const Membrane<dim>       &membrane,
+                   NodalFields<dim>          &nodes);
+
+    /// Stage 6m: x_a += dt sum_i N_i(x_a) v_i. Returns the largest
+    /// displacement over the cell's smallest altitude.
+    template <int dim>
+    double
+    membrane_positions(const BackgroundGrid<dim> &grid,
+                       const NodalFields<dim>    &nodes,
+                       const double               dt,
+                       Membrane<dim>             &membrane);
+
+    /// Stage 7m: split cables longer than @p max_length, locate the nodes,
+    /// and recompute the element forces from the new positions. Returns the
+    /// number of nodes outside the mesh (their cell is unchanged).
+    template <int dim>
+    unsigned int
+    membrane_relocate(const BackgroundGrid<dim> &grid,
+                      const double               max_length,
+                      Membrane<dim>             &membrane);
   } // namespace Stages
 } // namespace fsgmpm
 

@@ -1,0 +1,135 @@
+#ifndef fsgmpm_membrane_membrane_h
+#define fsgmpm_membrane_membrane_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+
+#include <fsgmpm/membrane/membrane_mechanics.h>
+
+#include <array>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /// Material of a membrane (per metre in 2D: EA and tension in N/m).
+  struct MembraneProperties
+  {
+    double axial_stiffness = 5e7; ///< EA = E * thickness (N/m)
+    double poisson_ratio   = 0.3; ///< in-plane nu (3D triangles only)
+    double areal_mass      = 0.5; ///< rho_A (kg/m^2)
+    /// Pre-strain: the rest size is the initial size / (1 + eps0) (2D
+    /// length, 3D each edge), so eps0 > 0 starts the membrane in tension.
+    double initial_strain = 0;
+  };
+
+  /**
+   * A geomembrane as a finite-element structure inside the MPM frame (FEM-MPM
+   * coupling, paper Section 2.1.2): 2-node tension-only cables in 2D, 3-node
+   * membrane triangles in 3D. Its nodes carry lumped mass and velocity and
+   * exchange mass, momentum and their element forces with the background
+   * grid like material points (Stages::membrane_*); the element forces come
+   * from the current node positions against the rest geometry (stateless:
+   * slack is never forgotten and the strain cannot drift).
+   *
+   * The geometry enters as a deal.II codimension-one triangulation
+   * (Triangulation<dim-1, dim>); its vertices become the nodes, its cells the
+   * elements, and its initial shape is the stress-free rest state.
+   */
+  template <int dim>
+  class Membrane
+  {
+  public:
+    static constexpr unsigned int nodes_per_element = dim;
+
+    Membrane(const Triangulation<dim - 1, dim> &mesh,
+             const MembraneProperties          &properties);
+
+    unsigned int
+    n_nodes() const
+    {
+      return position.size();
+    }
+    unsigned int
+    n_elements() const
+    {
+      return elements.size();
+    }
+
+    /// Element forces on the nodes (force) and element tensions from the
+    /// current positions: cable T = EA max(0, l/L - 1) in 2D; triangles
+    /// with the compression cut-off of Eqs. (9)-(10) in 3D.
+    void
+    compute_forces();
+
+    /// 2D: split every cable longer than @p max_length at its midpoint (rest
+    /// length and mass shared so that strain and total mass are unchanged),
+    /// so the fluid cannot leak between nodes. Returns the number of new
+    /// nodes; their cell is set to @p unknown_cell. 3D: returns the number
+    /// of triangles with an edge longer than max_length (not split).
+    unsigned int
+    split_long_elements(const double       max_length,
+                        const unsigned int unknown_cell);
+
+    /// Longest element edge in the current configuration.
+    double
+    max_element_length() const;
+
+    /// Current length (2D) or area (3D) of element e.
+    double
+    element_size(const unsigned int e) const;
+
+    /// Sum over the elements of EA / (current edge length), per node: the
+    /// stiffness that the nodal time-step bound needs.
+    std::vector<double>
+    nodal_stiffness() const;
+
+    /// Total current length (2D) or area (3D).
+    double
+    total_size() const;
+
+    /// 2D closed membrane: the signed area enclosed by the node polygon
+    /// (positive when counter-clockwise).
+    double
+    enclosed_area() const;
+
+    /// Closed polygon of the nodes in element order (2D), for output.
+    std::vector<Point<dim>>
+    ordered_nodes() const;
+
+    double
+    kinetic_energy() const;
+    double
+    strain_energy() const;
+
+    /// True if the elements form one closed loop (2D).
+    bool
+    is_closed_loop() const;
+
+    MembraneProperties properties;
+
+    // --- nodes -----------------------------------------------------------
+    std::vector<Point<dim>>     position;
+    std::vector<Tensor<1, dim>> velocity;
+    std::vector<double>         mass;
+    /// Element forces acting on the node (tension pulls nodes together).
+    std::vector<Tensor<1, dim>> force;
+    /// Background cell holding the node.
+    std::vector<unsigned int> cell;
+
+    // --- elements --------------------------------------------------------
+    std::vector<std::array<unsigned int, dim>> elements;
+    /// Rest length (2D) or rest area (3D).
+    std::vector<double> rest_size;
+    /// 3D: the rest frame of each triangle.
+    std::vector<MembraneMechanics::TriangleReference> reference;
+    /// Cable tension (2D) or major principal membrane stress (3D), N/m.
+    std::vector<double> tension;
+    /// 3D: minor principal membrane stress after the cut-off (N/m).
+    std::vector<double> minor_tension;
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,211 @@
+#include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/membrane_output.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+
+namespace fsgmpm
+{
+  template <int dim>
+  void
+  write_membrane_vtu(const Membrane<dim> &membrane, const std::string &file)
+  {
+    write_file_atomically(file, [&](std::ostream &out) {
+      const unsigned int nn = membrane.n_nodes(), ne = membrane.n_elements();
+      out << std::setprecision(10);
+      out
+        << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+        << "<Piece NumberOfPoints=\"" << nn << "\" NumberOfCells=\"" << ne
+        << "\">\n<Points>\n<DataArray type=\"Float64\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto &p : membrane.position)
+        out << p[0] << ' ' << p[1] << ' ' << (dim == 3 ? p[dim - 1] : 0.)
+            << '\n';
+      out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
+             "Name=\"connectivity\" format=\"ascii\">\n";
+      for (const auto &el : membrane.elements)
+        {
+          for (const unsigned int a : el)
+            out << a << ' ';
+          out << '\n';
+        }
+      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+             "format=\"ascii\">\n";
+      for (unsigned int e = 1; e <= ne; ++e)
+        out << e * dim << '\n';
+      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+             "format=\"ascii\">\n";
+      for (unsigned int e = 0; e < ne; ++e)
+        out << (dim == 2 ? 3 : 5) << '\n'; // VTK_LINE, VTK_TRIANGLE
+      out << "</DataArray>\n</Cells>\n<CellData Scalars=\"tension\">\n"
+          << "<DataArray type=\"Float64\" Name=\"tension\" "
+             "format=\"ascii\">\n";
+      for (const double t : membrane.tension)
+        out << t << '\n';
+      out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"stretch\" "
+             "format=\"ascii\">\n";
+      for (unsigned int e = 0; e < ne; ++e)
+        out << (dim == 2
+                  ? membrane.element_size(e) / membrane.rest_size[e]
+                  : std::sqrt(membrane.element_size(e) / membrane.rest_size[e]))
+            << '\n';
+      out << "</DataArray>\n</CellData>\n<PointData Vectors=\"velocity\">\n"
+          << "<DataArray type=\"Float64\" Name=\"velocity\" "
+             "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto &v : membrane.velocity)
+        out << v[0] << ' ' << v[1] << ' ' << (dim == 3 ? v[dim - 1] : 0.)
+            << '\n';
+      out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
+             "</VTKFile>\n";
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  write_membrane_shape_csv(const Membrane<dim> &membrane,
+                           const std::string   &file)
+  {
+    write_file_atomically(file, [&](std::ostream &out) {
+      out << (dim == 2 ? "x,y\n" : "x,y,z\n") << std::setprecision(17);
+      for (const auto &p : membrane.ordered_nodes())
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            out << (d ? "," : "") << p[d];
+          out << '\n';
+        }
+    });
+  }
+
+
+
+  const std::vector<std::string> &
+  membrane_monitor_names()
+  {
+    static const std::vector<std::string> names = {"height",
+                                                   "width",
+                                                   "contact_width",
+                                                   "max_tension",
+                                                   "mean_tension",
+                                                   "top_pressure",
+                                                   "bottom_pressure",
+                                                   "membrane_length",
+                                                   "enclosed_area",
+                                                   "fluid_volume",
+                                                   "particles_outside"};
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, double>
+  membrane_monitors(const Membrane<dim>      &membrane,
+                    const ParticleStore<dim> &particles,
+                    const double              contact_tolerance,
+                    const double              strip_width)
+  {
+    constexpr double big = std::numeric_limits<double>::max();
+    double           x0 = big, x1 = -big, y0 = big, y1 = -big;
+    for (const auto &p : membrane.position)
+      {
+        x0 = std::min(x0, p[0]);
+        x1 = std::max(x1, p[0]);
+        y0 = std::min(y0, p[1]);
+        y1 = std::max(y1, p[1]);
+      }
+    double c0 = big, c1 = -big;
+    for (const auto &p : membrane.position)
+      if (p[1] <= y0 + contact_tolerance)
+        {
+          c0 = std::min(c0, p[0]);
+          c1 = std::max(c1, p[0]);
+        }
+
+    double max_t = 0, tl = 0, l = 0;
+    for (unsigned int e = 0; e < membrane.n_elements(); ++e)
+      {
+        const double s = membrane.element_size(e);
+        max_t          = std::max(max_t, membrane.tension[e]);
+        tl += membrane.tension[e] * s;
+        l += s;
+      }
+
+    // Least-squares p = p0 + p1 (y - y_mean) over the central strip.
+    const double xc = 0.5 * (x0 + x1);
+    double       n = 0, sy = 0, sp = 0, syy = 0, syp = 0, volume = 0;
+    for (unsigned int q = 0; q < particles.size(); ++q)
+      {
+        volume += particles.volume[q];
+        if (std::abs(particles.position[q][0] - xc) > 0.5 * strip_width)
+          continue;
+        const double y = particles.position[q][1];
+        const double p = -trace(particles.stress[q]) / 3.;
+        n += 1;
+        sy += y;
+        sp += p;
+        syy += y * y;
+        syp += y * p;
+      }
+    double p_top = 0, p_bottom = 0;
+    if (n >= 2)
+      {
+        const double ym = sy / n, pm = sp / n;
+        const double var   = syy / n - ym * ym;
+        const double slope = var > 0 ? (syp / n - ym * pm) / var : 0.;
+        p_top              = pm + slope * (y1 - ym);
+        p_bottom           = pm + slope * (y0 - ym);
+      }
+
+    // Points outside the closed membrane (2D, even-odd rule): fluid that
+    // leaked between membrane nodes.
+    double outside = 0;
+    if (dim == 2)
+      {
+        const auto poly = membrane.ordered_nodes();
+        for (unsigned int q = 0; q < particles.size(); ++q)
+          {
+            const auto &x  = particles.position[q];
+            bool        in = false;
+            for (unsigned int i = 0, j = poly.size() - 1; i < poly.size();
+                 j = i++)
+              if ((poly[i][1] > x[1]) != (poly[j][1] > x[1])
+                  && x[0] < (poly[j][0] - poly[i][0]) * (x[1] - poly[i][1])
+                                / (poly[j][1] - poly[i][1])
+                              + poly[i][0])
+                in = !in;
+            outside += !in;
+          }
+      }
+
+    return {{"particles_outside", outside},
+            {"height", y1 - y0},
+            {"width", x1 - x0},
+            {"contact_width", c1 - c0},
+            {"max_tension", max_t},
+            {"mean_tension", l > 0 ? tl / l : 0.},
+            {"top_pressure", p_top},
+            {"bottom_pressure", p_bottom},
+            {"membrane_length", membrane.total_size()},
+            {"enclosed_area", membrane.enclosed_area()},
+            {"fluid_volume", volume}};
+  }
+
+#define FSGMPM_INSTANTIATE(dim)                                      \
+  template void write_membrane_vtu<dim>(const Membrane<dim> &,       \
+                                        const std::string &);        \
+  template void write_membrane_shape_csv<dim>(const Membrane<dim> &, \
+                                              const std::string &);  \
+  template std::map<std::string, double> membrane_monitors<dim>(     \
+    const Membrane<dim> &,                                           \
+    const ParticleStore<dim> &,                                      \
+    const double,                                                    \
+    const double);
+  FSGMPM_INSTANTIATE(2)
+  FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
+} // namespace fsgmpm

@@ -1,0 +1,337 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/membrane/membrane.h>
+
+#include <cmath>
+#include <map>
+
+namespace fsgmpm
+{
+  template <int dim>
+  Membrane<dim>::Membrane(const Triangulation<dim - 1, dim> &mesh,
+                          const MembraneProperties          &props)
+    : properties(props)
+  {
+    AssertThrow(props.axial_stiffness > 0
+                  && std::isfinite(props.axial_stiffness),
+                ExcMessage("Membrane/Axial stiffness EA must be positive."));
+    AssertThrow(props.areal_mass > 0 && std::isfinite(props.areal_mass),
+                ExcMessage("Membrane/Areal mass must be positive (the "
+                           "membrane nodes need mass to move with the "
+                           "grid)."));
+    AssertThrow(props.initial_strain > -0.5 && props.initial_strain < 1,
+                ExcMessage("Membrane/Initial strain must lie in (-0.5, 1)."));
+    AssertThrow(props.poisson_ratio > -1 && props.poisson_ratio < 1,
+                ExcMessage("Membrane/Poisson ratio must lie in (-1, 1)."));
+
+    // Only the vertices used by cells become nodes, numbered in order of
+    // first use so that a closed 2D loop is stored in loop order.
+    const auto                          &vertices = mesh.get_vertices();
+    std::map<unsigned int, unsigned int> node_of_vertex;
+    for (const auto &c : mesh.active_cell_iterators())
+      {
+        std::array<unsigned int, dim> element;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            const unsigned int v  = c->vertex_index(k);
+            auto               it = node_of_vertex.find(v);
+            if (it == node_of_vertex.end())
+              {
+                it = node_of_vertex.emplace(v, position.size()).first;
+                position.push_back(vertices[v]);
+              }
+            element[k] = it->second;
+          }
+        elements.push_back(element);
+      }
+    AssertThrow(!elements.empty(),
+                ExcMessage("The membrane mesh has no elements."));
+
+    const unsigned int n = position.size();
+    velocity.assign(n, Tensor<1, dim>());
+    force.assign(n, Tensor<1, dim>());
+    mass.assign(n, 0.);
+    cell.assign(n, static_cast<unsigned int>(-1));
+    tension.assign(elements.size(), 0.);
+    minor_tension.assign(elements.size(), 0.);
+
+    // Rest geometry = initial geometry; lumped mass rho_A |e| / dim per node.
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        const auto &el = elements[e];
+        if constexpr (dim == 2)
+          {
+            const double L = position[el[0]].distance(position[el[1]]);
+            AssertThrow(L > 0,
+                        ExcMessage("Membrane element " + std::to_string(e)
+                                   + " has zero length (two coincident "
+                                     "nodes)."));
+            rest_size.push_back(L / (1. + props.initial_strain));
+          }
+        else
+          {
+            // The rest triangle is the initial one shrunk by 1 + eps0.
+            const double s = 1. / (1. + props.initial_strain);
+            reference.push_back(MembraneMechanics::make_triangle_reference(
+              Point<3>(),
+              Point<3>(s * (position[el[1]] - position[el[0]])),
+              Point<3>(s * (position[el[2]] - position[el[0]]))));
+            rest_size.push_back(reference.back().area);
+          }
+        for (const unsigned int a : el)
+          mass[a] += props.areal_mass * rest_size[e] / dim;
+      }
+    compute_forces();
+  }
+
+
+
+  template <int dim>
+  void
+  Membrane<dim>::compute_forces()
+  {
+    for (auto &f : force)
+      f = Tensor<1, dim>();
+    const double EA = properties.axial_stiffness;
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        const auto &el = elements[e];
+        if constexpr (dim == 2)
+          {
+            Tensor<1, 2> f1, f2;
+            tension[e] = MembraneMechanics::cable_forces(
+              position[el[0]], position[el[1]], rest_size[e], EA, f1, f2);
+            force[el[0]] += f1;
+            force[el[1]] += f2;
+          }
+        else
+          {
+            std::array<Tensor<1, 3>, 3> f;
+            const auto                  r
+              = MembraneMechanics::triangle_forces(reference[e],
+                                                   position[el[0]],
+                                                   position[el[1]],
+                                                   position[el[2]],
+                                                   EA,
+                                                   properties.poisson_ratio,
+                                                   f);
+            tension[e]       = r.major_principal;
+            minor_tension[e] = r.minor_principal;
+            for (unsigned int k = 0; k < 3; ++k)
+              force[el[k]] += f[k];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Membrane<dim>::split_long_elements(const double       max_length,
+                                     const unsigned int unknown_cell)
+  {
+    if constexpr (dim == 3)
+      {
+        (void)unknown_cell;
+        unsigned int n_long = 0;
+        for (unsigned int e = 0; e < elements.size(); ++e)
+          for (unsigned int k = 0; k < 3; ++k)
+            if (position[elements[e][k]].distance(
+                  position[elements[e][(k + 1) % 3]])
+                > max_length)
+              {
+                ++n_long;
+                break;
+              }
+        return n_long;
+      }
+    else
+      {
+        unsigned int n_new = 0;
+        for (unsigned int e = 0; e < elements.size(); ++e)
+          {
+            const unsigned int a = elements[e][0], b = elements[e][1];
+            if (position[a].distance(position[b]) <= max_length)
+              continue;
+            // Midpoint node: half of the element's mass moves to it, the rest
+            // lengths halve (same strain, same tension).
+            const unsigned int m = position.size();
+            position.push_back(0.5 * (position[a] + position[b]));
+            velocity.push_back(0.5 * (velocity[a] + velocity[b]));
+            force.push_back(Tensor<1, dim>());
+            cell.push_back(unknown_cell);
+            const double element_mass = properties.areal_mass * rest_size[e];
+            mass[a] -= 0.25 * element_mass;
+            mass[b] -= 0.25 * element_mass;
+            mass.push_back(0.5 * element_mass);
+
+            rest_size[e] *= 0.5;
+            elements[e][1] = m;
+            elements.insert(elements.begin() + e + 1, {{m, b}});
+            rest_size.insert(rest_size.begin() + e + 1, rest_size[e]);
+            tension.insert(tension.begin() + e + 1, tension[e]);
+            minor_tension.insert(minor_tension.begin() + e + 1, 0.);
+            ++n_new;
+            --e; // the first half may still be too long
+          }
+        return n_new;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::element_size(const unsigned int e) const
+  {
+    const auto &el = elements[e];
+    if constexpr (dim == 2)
+      return position[el[0]].distance(position[el[1]]);
+    else
+      return 0.5
+             * cross_product_3d(position[el[1]] - position[el[0]],
+                                position[el[2]] - position[el[0]])
+                 .norm();
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::max_element_length() const
+  {
+    double l = 0;
+    for (const auto &el : elements)
+      for (unsigned int k = 0; k < dim; ++k)
+        l = std::max(l, position[el[k]].distance(position[el[(k + 1) % dim]]));
+    return l;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Membrane<dim>::nodal_stiffness() const
+  {
+    std::vector<double> k(n_nodes(), 0.);
+    const double        EA = properties.axial_stiffness;
+    for (const auto &el : elements)
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const unsigned int j = (i + 1) % dim;
+          const double       l = position[el[i]].distance(position[el[j]]);
+          // An edge shared by two triangles counts twice: a safe bound.
+          k[el[i]] += EA / l;
+          k[el[j]] += EA / l;
+          if (dim == 2)
+            break;
+        }
+    return k;
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::total_size() const
+  {
+    double s = 0;
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      s += element_size(e);
+    return s;
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::enclosed_area() const
+  {
+    // Shoelace over the elements (in x-y): each directed edge contributes.
+    double a = 0;
+    for (const auto &el : elements)
+      {
+        if (dim != 2)
+          return 0;
+        const auto &p = position[el[0]];
+        const auto &q = position[el[dim - 1]];
+        a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+      }
+    return a;
+  }
+
+
+
+  template <int dim>
+  std::vector<Point<dim>>
+  Membrane<dim>::ordered_nodes() const
+  {
+    std::vector<Point<dim>> p;
+    for (const auto &el : elements)
+      p.push_back(position[el[0]]);
+    return p;
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::kinetic_energy() const
+  {
+    double k = 0;
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      k += 0.5 * mass[a] * velocity[a].norm_square();
+    return k;
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::strain_energy() const
+  {
+    // 2D: T^2 L / (2 EA); 3D plane stress in principal values.
+    const double EA = properties.axial_stiffness, nu = properties.poisson_ratio;
+    double       w = 0;
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        const double s1 = tension[e], s2 = minor_tension[e];
+        w += rest_size[e] * (s1 * s1 + s2 * s2 - 2 * nu * s1 * s2) / (2 * EA);
+      }
+    return w;
+  }
+
+
+
+  template <int dim>
+  bool
+  Membrane<dim>::is_closed_loop() const
+  {
+    if (dim != 2)
+      return false;
+    // Every node in exactly two elements, as end of one and start of the
+    // next, and one single cycle.
+    std::vector<unsigned int> next(n_nodes(), static_cast<unsigned int>(-1));
+    std::vector<unsigned int> in_count(n_nodes(), 0);
+    for (const auto &el : elements)
+      {
+        if (next[el[0]] != static_cast<unsigned int>(-1))
+          return false;
+        next[el[0]] = el[dim - 1];
+        ++in_count[el[dim - 1]];
+      }
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      if (in_count[a] != 1 || next[a] == static_cast<unsigned int>(-1))
+        return false;
+    unsigned int a = 0, steps = 0;
+    do
+      {
+        a = next[a];
+        ++steps;
+    } while (a != 0 && steps <= n_nodes());
+    return steps == n_nodes();
+  }
+
+  template class Membrane<2>;
+  template class Membrane<3>;
+} // namespace fsgmpm

@@ -1,0 +1,366 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+
+#include <fsgmpm/membrane/membrane_geometry.h>
+#include <fsgmpm/particles/body_shape.h>
+#include <fsgmpm/scene/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace fsgmpm
+{
+  namespace MembraneGeometry
+  {
+    double
+    ellipse_perimeter(const double a, const double b)
+    {
+      // 4 a E(e): Gauss-Legendre on [0, pi/2] in 64 panels of 8 points; the
+      // integrand sqrt(1 - e^2 sin^2) is smooth unless b << a, where the
+      // panels still resolve it to well below 1e-12.
+      static const double x8[4] = {0.1834346424956498,
+                                   0.5255324099163290,
+                                   0.7966664774136267,
+                                   0.9602898564975363};
+      static const double w8[4] = {0.3626837833783620,
+                                   0.3137066458778873,
+                                   0.2223810344533745,
+                                   0.1012285362903763};
+      const double        e2    = 1. - (b * b) / (a * a);
+      const unsigned int  n     = 64;
+      const double        h     = 0.5 * M_PI / n;
+      double              s     = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double c = (i + 0.5) * h;
+          for (unsigned int k = 0; k < 4; ++k)
+            for (const double sign : {-1., 1.})
+              {
+                const double t  = c + sign * 0.5 * h * x8[k];
+                const double st = std::sin(t);
+                s += 0.5 * h * w8[k] * std::sqrt(1. - e2 * st * st);
+              }
+        }
+      return 4. * a * s;
+    }
+
+
+
+    std::pair<double, double>
+    ellipse_axes(const double L, const double A)
+    {
+      AssertThrow(L > 0 && A > 0 && A < L * L / (4. * M_PI),
+                  ExcMessage("An ellipse of circumference " + std::to_string(L)
+                             + " m cannot enclose " + std::to_string(A)
+                             + " m^2: the area must lie in (0, L^2/(4 pi)) = "
+                               "(0, "
+                             + std::to_string(L * L / (4. * M_PI))
+                             + ") (a circle holds the most)."));
+      // Bisection on the axis ratio r = b/a in (0, 1]: with a from the
+      // area (pi a b = A) the perimeter grows as r falls.
+      double lo = 1e-12, hi = 1.;
+      for (unsigned int it = 0; it < 200; ++it)
+        {
+          const double r = 0.5 * (lo + hi);
+          const double a = std::sqrt(A / (M_PI * r));
+          if (ellipse_perimeter(a, r * a) > L)
+            lo = r;
+          else
+            hi = r;
+        }
+      const double r = 0.5 * (lo + hi);
+      const double a = std::sqrt(A / (M_PI * r));
+      return {a, r * a};
+    }
+
+
+
+    std::vector<Point<2>>
+    ellipse_points(const Point<2>    &center,
+                   const double       a,
+                   const double       b,
+                   const unsigned int n)
+    {
+      // Tabulate the arc length over the parameter, then invert it.
+      const unsigned int  m = 20000 * std::max(1u, n / 100);
+      std::vector<double> s(m + 1, 0.);
+      auto                at = [&](const double t) {
+        return Point<2>(center[0] + a * std::sin(t),
+                        center[1] - b * std::cos(t));
+      };
+      for (unsigned int i = 1; i <= m; ++i)
+        s[i] = s[i - 1]
+               + at(2 * M_PI * i / m).distance(at(2 * M_PI * (i - 1) / m));
+      std::vector<Point<2>> p;
+      unsigned int          j = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double target = s[m] * k / n;
+          while (s[j + 1] < target)
+            ++j;
+          const double f = (target - s[j]) / (s[j + 1] - s[j]);
+          p.push_back(at(2 * M_PI * (j + f) / m));
+        }
+      return p;
+    }
+  } // namespace MembraneGeometry
+
+
+
+  template <int dim>
+  void
+  MembraneDescription<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Membrane");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Add a geomembrane coupled to the grid (FEM-MPM, "
+                        "shared grid nodes).");
+      prm.declare_entry("Shape",
+                        "ellipse",
+                        Patterns::Selection("ellipse|polygon|gmsh"),
+                        "ellipse: closed ellipse of the given circumference "
+                        "and enclosed area; polygon: closed polygon (2D); "
+                        "gmsh: a surface mesh of triangles (3D). In 3D the "
+                        "ellipse and polygon are extruded along z over the "
+                        "grid's thickness.");
+      prm.declare_entry("Circumference",
+                        "9.2",
+                        Patterns::Double(0),
+                        "Shape = ellipse: rest length of the membrane (m).");
+      prm.declare_entry("Enclosed area",
+                        "5.56",
+                        Patterns::Double(0),
+                        "Shape = ellipse: area inside the ellipse (m^2), "
+                        "below Circumference^2/(4 pi).");
+      prm.declare_entry("Lowest point",
+                        "3, 0",
+                        Patterns::List(Patterns::Double(), 2, 2),
+                        "Shape = ellipse: x, y of the ellipse's lowest point "
+                        "(m).");
+      prm.declare_entry("Polygon vertices",
+                        "",
+                        Patterns::Anything(),
+                        "Shape = polygon: 'x0, y0; x1, y1; ...' (m), a simple "
+                        "closed polygon, counter-clockwise.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "Shape = gmsh: Gmsh file of the membrane surface "
+                        "(3-node triangles).");
+      prm.declare_entry("Element size",
+                        "0",
+                        Patterns::Double(0),
+                        "Initial element length (m); 0: 0.4 grid cells.");
+      prm.declare_entry("Split length",
+                        "0.5",
+                        Patterns::Double(0),
+                        "A cable longer than this many grid cells is split "
+                        "in two (fluid leaks between nodes farther apart than "
+                        "about one cell); in (0, 1].");
+      prm.declare_entry("Axial stiffness",
+                        "5e7",
+                        Patterns::Double(0),
+                        "EA = E * thickness (N/m).");
+      prm.declare_entry("Poisson ratio",
+                        "0.3",
+                        Patterns::Double(-1, 1),
+                        "In-plane Poisson ratio (3D), in (-1, 1).");
+      prm.declare_entry("Initial strain",
+                        "0",
+                        Patterns::Double(-0.5, 1),
+                        "Pre-strain eps0: the rest length is the initial "
+                        "length / (1 + eps0); > 0 starts in tension.");
+      prm.declare_entry("Areal mass",
+                        "0.5",
+                        Patterns::Double(0),
+                        "Mass per membrane area (kg/m^2, > 0).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  MembraneDescription<dim>::MembraneDescription(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Membrane");
+    enabled       = prm.get_bool("Enabled");
+    shape         = prm.get("Shape");
+    circumference = prm.get_double("Circumference");
+    area          = prm.get_double("Enclosed area");
+    const auto lp
+      = parse_vector<2>(prm.get("Lowest point"), "Membrane/Lowest point");
+    bottom                     = Point<2>(lp);
+    mesh_file                  = prm.get("Mesh file");
+    element_size               = prm.get_double("Element size");
+    split_fraction             = prm.get_double("Split length");
+    properties.axial_stiffness = prm.get_double("Axial stiffness");
+    properties.poisson_ratio   = prm.get_double("Poisson ratio");
+    properties.areal_mass      = prm.get_double("Areal mass");
+    properties.initial_strain  = prm.get_double("Initial strain");
+    if (enabled && shape == "polygon")
+      {
+        for (const auto &item :
+             Utilities::split_string_list(prm.get("Polygon vertices"), ';'))
+          polygon.emplace_back(
+            parse_vector<2>(item, "Membrane/Polygon vertices"));
+        AssertThrow(polygon.size() >= 3,
+                    ExcMessage("Membrane/Polygon vertices needs at least "
+                               "three vertices 'x0, y0; x1, y1; x2, y2'."));
+        try
+          {
+            PolygonShape check(polygon);
+          }
+        catch (ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            AssertThrow(false,
+                        ExcMessage("Membrane/Polygon vertices: "
+                                   + Utilities::trim(info.str())));
+          }
+      }
+    prm.leave_subsection();
+    if (!enabled)
+      return;
+    AssertThrow(split_fraction > 0 && split_fraction <= 1,
+                ExcMessage("Membrane/Split length must lie in (0, 1] grid "
+                           "cells; got "
+                           + std::to_string(split_fraction) + "."));
+    AssertThrow(properties.axial_stiffness > 0,
+                ExcMessage("Membrane/Axial stiffness must be positive."));
+    AssertThrow(properties.areal_mass > 0,
+                ExcMessage("Membrane/Areal mass must be positive."));
+    AssertThrow(shape != "gmsh" || dim == 3,
+                ExcMessage("Membrane/Shape = gmsh needs a 3D scene (a 2D "
+                           "membrane is an ellipse or a polygon)."));
+    AssertThrow(shape != "gmsh" || !mesh_file.empty(),
+                ExcMessage("Membrane/Mesh file must be given when "
+                           "Membrane/Shape = gmsh."));
+    if (shape == "ellipse")
+      try
+        {
+          MembraneGeometry::ellipse_axes(circumference, area);
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          AssertThrow(false,
+                      ExcMessage("Membrane/Circumference and Enclosed area: "
+                                 + Utilities::trim(info.str())));
+        }
+  }
+
+
+
+  template <int dim>
+  std::vector<Point<2>>
+  MembraneDescription<dim>::outline(const double cell_size) const
+  {
+    const double h = (element_size > 0) ? element_size : 0.4 * cell_size;
+    // The closed outline in x-y, counter-clockwise, with elements of at
+    // most h.
+    std::vector<Point<2>> outline;
+    if (shape == "ellipse")
+      {
+        const auto [a, b] = MembraneGeometry::ellipse_axes(circumference, area);
+        const unsigned int n
+          = std::max(8u, (unsigned int)std::ceil(circumference / h));
+        outline = MembraneGeometry::ellipse_points(
+          Point<2>(bottom[0], bottom[1] + b), a, b, n);
+      }
+    else
+      for (unsigned int i = 0; i < polygon.size(); ++i)
+        {
+          const Point<2> &p = polygon[i],
+                         &q = polygon[(i + 1) % polygon.size()];
+          const unsigned int n
+            = std::max(1u, (unsigned int)std::ceil(p.distance(q) / h));
+          for (unsigned int k = 0; k < n; ++k)
+            outline.push_back(p + (double(k) / n) * (q - p));
+        }
+
+    // Counter-clockwise, so that the enclosed area is positive.
+    double signed_area = 0;
+    for (unsigned int i = 0; i < outline.size(); ++i)
+      {
+        const auto &p = outline[i], &q = outline[(i + 1) % outline.size()];
+        signed_area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+      }
+    if (signed_area < 0)
+      std::reverse(outline.begin(), outline.end());
+    return outline;
+  }
+
+
+
+  template <int dim>
+  void
+  MembraneDescription<dim>::make_mesh(const double cell_size,
+                                      const std::pair<double, double> &z_range,
+                                      Triangulation<dim - 1, dim> &mesh) const
+  {
+    const double h = (element_size > 0) ? element_size : 0.4 * cell_size;
+
+    if (shape == "gmsh")
+      {
+        std::ifstream in(mesh_file);
+        AssertThrow(in,
+                    ExcMessage("Membrane/Mesh file: cannot open <" + mesh_file
+                               + ">."));
+        GridIn<dim - 1, dim> grid_in;
+        grid_in.attach_triangulation(mesh);
+        grid_in.read_msh(in);
+        return;
+      }
+
+    const std::vector<Point<2>> outline = this->outline(cell_size);
+    const unsigned int          n       = outline.size();
+    if constexpr (dim == 2)
+      {
+        std::vector<Point<2>>    vertices = outline;
+        std::vector<CellData<1>> cells(n);
+        for (unsigned int i = 0; i < n; ++i)
+          cells[i].vertices = {i, (i + 1) % n};
+        mesh.create_triangulation(vertices, cells, SubCellData());
+      }
+    else
+      {
+        // Rings of the outline along z, each quad split into two triangles
+        // with outward normals.
+        const unsigned int nz = std::max(
+          1u, (unsigned int)std::ceil((z_range.second - z_range.first) / h));
+        std::vector<Point<3>> vertices;
+        for (unsigned int k = 0; k <= nz; ++k)
+          for (const auto &p : outline)
+            vertices.emplace_back(p[0],
+                                  p[1],
+                                  z_range.first
+                                    + (z_range.second - z_range.first) * k
+                                        / nz);
+        std::vector<CellData<2>> cells;
+        for (unsigned int k = 0; k < nz; ++k)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int a = k * n + i, b = k * n + (i + 1) % n,
+                                 c = a + n, d = b + n;
+              CellData<2> t1(3), t2(3);
+              t1.vertices = {a, b, d};
+              t2.vertices = {a, d, c};
+              cells.push_back(t1);
+              cells.push_back(t2);
+            }
+        mesh.create_triangulation(vertices, cells, SubCellData());
+      }
+  }
+
+  template struct MembraneDescription<2>;
+  template struct MembraneDescription<3>;
+} // namespace fsgmpm

@@ -1,0 +1,201 @@
+#include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/step/stages.h>
+
+#include <cmath>
+#include <limits>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    // The membrane is small (10^2-10^4 nodes against 10^5 points), so its
+    // transfers run serially; they only need the shape values N_i(x_a), never
+    // gradients (FEM-MPM coupling through the shared grid nodes).
+
+    template <int dim>
+    void
+    membrane_p2g(const BackgroundGrid<dim> &grid,
+                 const Membrane<dim>       &membrane,
+                 NodalFields<dim>          &nodes)
+    {
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          const unsigned int c = membrane.cell[a];
+          nodes.activate(grid.cell_nodes[c]);
+          const auto   lambda = grid.barycentric(c, membrane.position[a]);
+          const double m      = membrane.mass[a];
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            {
+              const unsigned int i = grid.cell_nodes[c][k];
+              nodes.mass[i] += lambda[k] * m;
+              nodes.momentum[i] += (lambda[k] * m) * membrane.velocity[a];
+              // The element force acts on the node: M a = F_ext - F_int.
+              nodes.internal_force[i] -= lambda[k] * membrane.force[a];
+            }
+        }
+    }
+
+
+
+    template <int dim>
+    double
+    membrane_time_step(const BackgroundGrid<dim> &grid,
+                       const Membrane<dim>       &membrane,
+                       NodalFields<dim>          &nodes,
+                       const double               dt_floor)
+    {
+      // Gershgorin bound on the membrane stiffness projected to the grid,
+      // k_i <= c0 sum_a N_i(x_a) sum_{e at a} EA/l_e, with the full nodal
+      // mass (fluid added mass included): dt <= 2 sqrt(m_i / k_i).
+      const double c0
+        = (dim == 2)
+            ? 2.5
+            : 2.5 / (1. - std::pow(membrane.properties.poisson_ratio, 2));
+      const std::vector<double> k_node = membrane.nodal_stiffness();
+      std::vector<std::pair<unsigned int, double>> k_grid;
+      k_grid.reserve(membrane.n_nodes() * (dim + 1));
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          const unsigned int c      = membrane.cell[a];
+          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            k_grid.emplace_back(grid.cell_nodes[c][k],
+                                c0 * std::max(lambda[k], 0.) * k_node[a]);
+        }
+      // Sum per grid node through a sort (no global scratch array).
+      std::sort(k_grid.begin(), k_grid.end());
+      double dt = std::numeric_limits<double>::max();
+      for (unsigned int j = 0; j < k_grid.size();)
+        {
+          const unsigned int i = k_grid[j].first;
+          double             k = 0;
+          for (; j < k_grid.size() && k_grid[j].first == i; ++j)
+            k += k_grid[j].second;
+          if (k > 0 && nodes.mass[i] > 0)
+            {
+              const double needed = 0.25 * k * dt_floor * dt_floor;
+              if (nodes.mass[i] < needed)
+                nodes.added_mass[i] = needed - nodes.mass[i];
+              dt = std::min(
+                dt, 2. * std::sqrt((nodes.mass[i] + nodes.added_mass[i]) / k));
+            }
+        }
+      return dt;
+    }
+
+
+
+    template <int dim>
+    void
+    membrane_g2p(const BackgroundGrid<dim> &grid,
+                 const NodalFields<dim>    &nodes,
+                 Membrane<dim>             &membrane)
+    {
+      // PIC: the node takes the grid velocity v^{n+1}. Its mass is
+      // negligible, and PIC keeps its velocity free of noise.
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          const unsigned int c      = membrane.cell[a];
+          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          Tensor<1, dim>     v;
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            v += lambda[k] * nodes.velocity[grid.cell_nodes[c][k]];
+          membrane.velocity[a] = v;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    membrane_remap(const BackgroundGrid<dim> &grid,
+                   const Membrane<dim>       &membrane,
+                   NodalFields<dim>          &nodes)
+    {
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          const unsigned int c      = membrane.cell[a];
+          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            nodes.momentum[grid.cell_nodes[c][k]]
+              += (lambda[k] * membrane.mass[a]) * membrane.velocity[a];
+        }
+    }
+
+
+
+    template <int dim>
+    double
+    membrane_positions(const BackgroundGrid<dim> &grid,
+                       const NodalFields<dim>    &nodes,
+                       const double               dt,
+                       Membrane<dim>             &membrane)
+    {
+      double ratio = 0;
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          const unsigned int c      = membrane.cell[a];
+          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          Tensor<1, dim>     dx;
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            dx += lambda[k] * nodes.velocity[grid.cell_nodes[c][k]];
+          dx *= dt;
+          membrane.position[a] += dx;
+          ratio = std::max(ratio, dx.norm() / grid.cell_min_altitude[c]);
+        }
+      return ratio;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    membrane_relocate(const BackgroundGrid<dim> &grid,
+                      const double               max_length,
+                      Membrane<dim>             &membrane)
+    {
+      const unsigned int unknown = BackgroundGrid<dim>::invalid;
+      membrane.split_long_elements(max_length, unknown);
+      const PointLocator<dim> locator(grid);
+      unsigned int            outside = 0;
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          // New nodes start the walk from cell 0 (rare: only after a split).
+          const unsigned int guess
+            = membrane.cell[a] == unknown ? 0 : membrane.cell[a];
+          const unsigned int c = locator.locate(membrane.position[a], guess);
+          if (c == unknown)
+            ++outside;
+          else
+            membrane.cell[a] = c;
+        }
+      membrane.compute_forces();
+      return outside;
+    }
+
+#define FSGMPM_INSTANTIATE(dim)                                              \
+  template void         membrane_p2g<dim>(const BackgroundGrid<dim> &,       \
+                                  const Membrane<dim> &,             \
+                                  NodalFields<dim> &);               \
+  template double       membrane_time_step<dim>(const BackgroundGrid<dim> &, \
+                                          const Membrane<dim> &,       \
+                                          NodalFields<dim> &,          \
+                                          const double);               \
+  template void         membrane_g2p<dim>(const BackgroundGrid<dim> &,       \
+                                  const NodalFields<dim> &,          \
+                                  Membrane<dim> &);                  \
+  template void         membrane_remap<dim>(const BackgroundGrid<dim> &,     \
+                                    const Membrane<dim> &,           \
+                                    NodalFields<dim> &);             \
+  template double       membrane_positions<dim>(const BackgroundGrid<dim> &, \
+                                          const NodalFields<dim> &,    \
+                                          const double,                \
+                                          Membrane<dim> &);            \
+  template unsigned int membrane_relocate<dim>(const BackgroundGrid<dim> &,  \
+                                               const double,                 \
+                                               Membrane<dim> &);
+    FSGMPM_INSTANTIATE(2)
+    FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
+  } // namespace Stages
+} // namespace fsgmpm
