@@ -210,6 +210,13 @@ namespace fsgmpm
     Triangulation<dim - 1, dim> mesh;
     description.make_mesh(h, membrane_z_range, mesh);
     membrane = std::make_unique<Membrane<dim>>(mesh, description.properties);
+    membrane->tangential_slip = description.tangential_slip;
+    if (std::isfinite(description.ground_level))
+      {
+        membrane->ground_level     = description.ground_level;
+        membrane->ground_stiffness = description.ground_stiffness;
+        membrane->compute_forces();
+      }
     AssertThrow(dim == 3 || membrane->is_closed_loop(),
                 ExcMessage("The membrane must be one closed loop."));
     membrane_split_length = description.split_fraction * h;

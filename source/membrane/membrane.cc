@@ -121,6 +121,12 @@ namespace fsgmpm
               force[el[k]] += f[k];
           }
       }
+    // Ground contact: a normal penalty force on the nodes below the ground
+    // (frictionless: no tangential force).
+    if (std::isfinite(ground_level))
+      for (unsigned int a = 0; a < n_nodes(); ++a)
+        if (position[a][1] < ground_level)
+          force[a][1] += ground_stiffness * (ground_level - position[a][1]);
   }
 
 
@@ -182,6 +188,73 @@ namespace fsgmpm
 
   template <int dim>
   double
+  Membrane<dim>::equalize_stretch()
+  {
+    if (dim != 2 || !is_closed_loop())
+      return 0;
+    const unsigned int n = elements.size();
+    // Loop order: element e goes from node(e) to node(e+1).
+    std::vector<unsigned int> node(n);
+    for (unsigned int e = 0; e < n; ++e)
+      node[e] = elements[e][0];
+    std::vector<double> s(n + 1, 0.), S(n + 1, 0.);
+    for (unsigned int e = 0; e < n; ++e)
+      {
+        s[e + 1]
+          = s[e]
+            + position[elements[e][0]].distance(position[elements[e][dim - 1]]);
+        S[e + 1] = S[e] + rest_size[e];
+      }
+    const double length = s[n], rest = S[n];
+    // Target arc length of node k: proportional to the rest length before
+    // it, shifted so that the mean shift is zero (no drift along the loop).
+    double shift = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      shift += s[k] - S[k] * length / rest;
+    shift /= n;
+
+    // Catmull-Rom point at parameter t in [0, 1] of chord e.
+    auto curve = [&](const unsigned int e, const double t) {
+      const Point<dim> &p0 = position[node[(e + n - 1) % n]],
+                       &p1 = position[node[e]],
+                       &p2 = position[node[(e + 1) % n]],
+                       &p3 = position[node[(e + 2) % n]];
+      const double t2 = t * t, t3 = t2 * t;
+      Point<dim>   x;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] = 0.5
+               * (2 * p1[d] + (-p0[d] + p2[d]) * t
+                  + (2 * p0[d] - 5 * p1[d] + 4 * p2[d] - p3[d]) * t2
+                  + (-p0[d] + 3 * p1[d] - 3 * p2[d] + p3[d]) * t3);
+      return x;
+    };
+
+    std::vector<Point<dim>> moved(n);
+    double                  max_move = 0;
+    unsigned int            e        = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        double target = S[k] * length / rest + shift;
+        target        = std::fmod(target + length, length);
+        // Find the chord holding the target arc length (monotone in k up
+        // to the wrap-around).
+        unsigned int tries = 0;
+        while (!(s[e] <= target && target <= s[e + 1]) && tries++ <= n)
+          e = (e + 1) % n;
+        const double t
+          = (s[e + 1] > s[e]) ? (target - s[e]) / (s[e + 1] - s[e]) : 0.;
+        moved[k] = curve(e, t);
+        max_move = std::max(max_move, moved[k].distance(position[node[k]]));
+      }
+    for (unsigned int k = 0; k < n; ++k)
+      position[node[k]] = moved[k];
+    return max_move;
+  }
+
+
+
+  template <int dim>
+  double
   Membrane<dim>::element_size(const unsigned int e) const
   {
     const auto &el = elements[e];
@@ -226,6 +299,9 @@ namespace fsgmpm
           if (dim == 2)
             break;
         }
+    if (std::isfinite(ground_level))
+      for (auto &ka : k)
+        ka += ground_stiffness;
     return k;
   }
 

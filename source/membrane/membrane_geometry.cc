@@ -163,6 +163,30 @@ namespace fsgmpm
                         "A cable longer than this many grid cells is split "
                         "in two (fluid leaks between nodes farther apart than "
                         "about one cell); in (0, 1].");
+      prm.declare_entry("Tangential coupling",
+                        "no-slip",
+                        Patterns::Selection("no-slip|slip"),
+                        "no-slip: the membrane nodes move with the grid "
+                        "velocity (shared nodes, paper); slip (2D closed "
+                        "membranes): in addition the nodes are moved along "
+                        "the membrane each step so that the tension is "
+                        "uniform, i.e. frictionless contact with the fill "
+                        "(a fluid at rest carries no shear).");
+      prm.declare_entry("Ground level",
+                        "none",
+                        Patterns::Anything(),
+                        "y of a rigid frictionless ground that acts on the "
+                        "membrane nodes directly (normal penalty, included in "
+                        "the time step), so the membrane rests on it instead "
+                        "of one cell above a grid wall; the grid must extend "
+                        "below it. none: no ground.");
+      prm.declare_entry("Ground stiffness",
+                        "1e7",
+                        Patterns::Double(0),
+                        "Penalty stiffness per membrane node (N/m per metre "
+                        "in 2D): a node below the ground gets k times its "
+                        "depth upwards. The penetration is about the bottom "
+                        "pressure times the element size / k.");
       prm.declare_entry("Axial stiffness",
                         "5e7",
                         Patterns::Double(0),
@@ -204,6 +228,30 @@ namespace fsgmpm
     properties.poisson_ratio   = prm.get_double("Poisson ratio");
     properties.areal_mass      = prm.get_double("Areal mass");
     properties.initial_strain  = prm.get_double("Initial strain");
+    tangential_slip            = (prm.get("Tangential coupling") == "slip");
+    {
+      const std::string g = Utilities::trim(prm.get("Ground level"));
+      if (g != "none")
+        {
+          try
+            {
+              ground_level = Utilities::string_to_double(g);
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage("Membrane/Ground level must be a number "
+                                     "or none; got <"
+                                     + g + ">."));
+            }
+          AssertThrow(std::isfinite(ground_level),
+                      ExcMessage("Membrane/Ground level must be finite."));
+          ground_stiffness = prm.get_double("Ground stiffness");
+          AssertThrow(ground_stiffness > 0,
+                      ExcMessage("Membrane/Ground stiffness must be "
+                                 "positive."));
+        }
+    }
     if (enabled && shape == "polygon")
       {
         for (const auto &item :
@@ -237,6 +285,9 @@ namespace fsgmpm
                 ExcMessage("Membrane/Axial stiffness must be positive."));
     AssertThrow(properties.areal_mass > 0,
                 ExcMessage("Membrane/Areal mass must be positive."));
+    AssertThrow(!tangential_slip || dim == 2,
+                ExcMessage("Membrane/Tangential coupling = slip is only "
+                           "available in 2D."));
     AssertThrow(shape != "gmsh" || dim == 3,
                 ExcMessage("Membrane/Shape = gmsh needs a 3D scene (a 2D "
                            "membrane is an ellipse or a polygon)."));

@@ -15,14 +15,24 @@ namespace fsgmpm
     template <int dim>
     void
     membrane_p2g(const BackgroundGrid<dim> &grid,
-                 const Membrane<dim>       &membrane,
+                 Membrane<dim>             &membrane,
                  NodalFields<dim>          &nodes)
     {
+      // The shape values at the node (start of step) are the transfer
+      // weights of every membrane stage of this step.
+      membrane.weights.resize(membrane.n_nodes());
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        {
+          const auto l
+            = grid.barycentric(membrane.cell[a], membrane.position[a]);
+          std::copy(l.begin(), l.end(), membrane.weights[a].begin());
+        }
+
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
         {
           const unsigned int c = membrane.cell[a];
           nodes.activate(grid.cell_nodes[c]);
-          const auto   lambda = grid.barycentric(c, membrane.position[a]);
+          const auto  &lambda = membrane.weights[a];
           const double m      = membrane.mass[a];
           for (unsigned int k = 0; k < dim + 1; ++k)
             {
@@ -57,7 +67,7 @@ namespace fsgmpm
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
         {
           const unsigned int c      = membrane.cell[a];
-          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          const auto        &lambda = membrane.weights[a];
           for (unsigned int k = 0; k < dim + 1; ++k)
             k_grid.emplace_back(grid.cell_nodes[c][k],
                                 c0 * std::max(lambda[k], 0.) * k_node[a]);
@@ -96,7 +106,7 @@ namespace fsgmpm
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
         {
           const unsigned int c      = membrane.cell[a];
-          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          const auto        &lambda = membrane.weights[a];
           Tensor<1, dim>     v;
           for (unsigned int k = 0; k < dim + 1; ++k)
             v += lambda[k] * nodes.velocity[grid.cell_nodes[c][k]];
@@ -115,7 +125,7 @@ namespace fsgmpm
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
         {
           const unsigned int c      = membrane.cell[a];
-          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          const auto        &lambda = membrane.weights[a];
           for (unsigned int k = 0; k < dim + 1; ++k)
             nodes.momentum[grid.cell_nodes[c][k]]
               += (lambda[k] * membrane.mass[a]) * membrane.velocity[a];
@@ -135,7 +145,7 @@ namespace fsgmpm
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
         {
           const unsigned int c      = membrane.cell[a];
-          const auto         lambda = grid.barycentric(c, membrane.position[a]);
+          const auto        &lambda = membrane.weights[a];
           Tensor<1, dim>     dx;
           for (unsigned int k = 0; k < dim + 1; ++k)
             dx += lambda[k] * nodes.velocity[grid.cell_nodes[c][k]];
@@ -155,6 +165,8 @@ namespace fsgmpm
                       Membrane<dim>             &membrane)
     {
       const unsigned int unknown = BackgroundGrid<dim>::invalid;
+      if (membrane.tangential_slip)
+        membrane.equalize_stretch();
       membrane.split_long_elements(max_length, unknown);
       const PointLocator<dim> locator(grid);
       unsigned int            outside = 0;
@@ -175,7 +187,7 @@ namespace fsgmpm
 
 #define FSGMPM_INSTANTIATE(dim)                                              \
   template void         membrane_p2g<dim>(const BackgroundGrid<dim> &,       \
-                                  const Membrane<dim> &,             \
+                                  Membrane<dim> &,                   \
                                   NodalFields<dim> &);               \
   template double       membrane_time_step<dim>(const BackgroundGrid<dim> &, \
                                           const Membrane<dim> &,       \

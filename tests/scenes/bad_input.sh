@@ -67,6 +67,7 @@ expect_error "membrane outside the mesh" "Membrane node .* lies outside the mesh
 expect_error "fill a missing membrane" "Shape = membrane needs a membrane" "$g" --set "Membrane/Enabled=false" --set "Monitors/Scene monitors="
 expect_error "self-intersecting membrane" "Membrane/Polygon vertices: The polygon intersects itself" "$g" --set "Membrane/Shape=polygon" --set "Membrane/Polygon vertices=1,1; 2,2; 2,1; 1,2"
 expect_error "zero membrane stiffness" "Axial stiffness" "$g" --set "Membrane/Axial stiffness=0"
+expect_error "ground level not a number" "Membrane/Ground level must be a number or none" "$g" --set "Membrane/Ground level=floor"
 
 echo "bad input: $passed passed, $failures failed"
 [ $failures -eq 0 ]

@@ -8,6 +8,7 @@
 #include <fsgmpm/membrane/membrane_mechanics.h>
 
 #include <array>
+#include <limits>
 #include <vector>
 
 namespace fsgmpm
@@ -73,6 +74,15 @@ namespace fsgmpm
     split_long_elements(const double       max_length,
                         const unsigned int unknown_cell);
 
+    /// 2D closed loop, frictionless (slip) contact with the fill: move the
+    /// nodes along the membrane so that every cable has the same stretch
+    /// (uniform tension, as a fluid that carries no shear at rest allows).
+    /// The curve is kept: nodes are placed on the cubic (Catmull-Rom)
+    /// interpolant through the current nodes, and the mean tangential shift
+    /// is zero. Returns the largest shift. 3D: does nothing.
+    double
+    equalize_stretch();
+
     /// Longest element edge in the current configuration.
     double
     max_element_length() const;
@@ -109,6 +119,20 @@ namespace fsgmpm
     is_closed_loop() const;
 
     MembraneProperties properties;
+    /// Frictionless contact with the fill (2D): equalize_stretch() after
+    /// every position update.
+    bool tangential_slip = false;
+    /// Transfer weights of each node to the nodes of its cell, set by
+    /// Stages::membrane_p2g and used by the other membrane stages of the
+    /// step.
+    std::vector<std::array<double, dim + 1>> weights;
+
+    /// Rigid frictionless ground y = ground_level acting on the membrane
+    /// nodes themselves (penalty k = ground_stiffness per node, N/m per m
+    /// in 2D), so that the membrane can rest on it exactly instead of one
+    /// cell early as with a wall of the grid. Off if not finite.
+    double ground_level     = -std::numeric_limits<double>::infinity();
+    double ground_stiffness = 0;
 
     // --- nodes -----------------------------------------------------------
     std::vector<Point<dim>>     position;

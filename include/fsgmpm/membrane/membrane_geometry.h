@@ -7,6 +7,7 @@
 
 #include <fsgmpm/membrane/membrane.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,8 +32,11 @@ namespace fsgmpm
     std::string           mesh_file;
     /// Initial element length (0: 0.4 grid cells) and the length above
     /// which a cable is split (as a fraction of the grid cell size).
-    double             element_size   = 0;
-    double             split_fraction = 0.5;
+    double             element_size    = 0;
+    double             split_fraction  = 0.5;
+    bool               tangential_slip = false;
+    double             ground_level = -std::numeric_limits<double>::infinity();
+    double             ground_stiffness = 1e7;
     MembraneProperties properties;
 
     static void

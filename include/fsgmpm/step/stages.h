@@ -168,11 +168,13 @@ namespace fsgmpm
     // and element forces from the new positions.
 
     /// Stage 1m: mass, momentum and element forces of the membrane nodes to
-    /// the nodes of their cells (which become active).
+    /// the nodes of their cells (which become active), with the transfer
+    /// weights (Membrane::weights) that the other membrane stages of the
+    /// step reuse. Call after Stages::p2g.
     template <int dim>
     void
     membrane_p2g(const BackgroundGrid<dim> &grid,
-                 const Membrane<dim>       &membrane,
+                 Membrane<dim>             &membrane,
                  NodalFields<dim>          &nodes);
 
     /// Nodal time-step bound of SPEC 2 with the membrane: min over grid

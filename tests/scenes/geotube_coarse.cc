@@ -1,0 +1,148 @@
+// Coarse geotube (issue 5): prm/geotube_A5.56.prm at 16 cm cells with the
+// quasi-static weakly compressible fluid (K_f = 2.7e7 Pa: p_max/K_f = 1e-3),
+// relaxed for 5 s of simulated time (dynamic relaxation with mass scaling),
+// against the independent analytic solution (tests/reference/
+// geotube_reference.h: inextensible weightless membrane, hydrostatic fill,
+// frictionless base) for the run's own measured enclosed area and membrane
+// length (the solver's error); the error against the nominal 5.56 m^2 and
+// 9.2 m (the user's error) is printed.
+// Asserts: H/W within 0.05 (issue 5), mean tension within 10%, top and
+// bottom pressure within 10% of the analytic bottom pressure, uniform
+// tension (frictionless slip: max/mean - 1 < 1%), no point lost and at most
+// 0.5% of the points outside the membrane.
+// Test GeotubeCoarseValidation (label validation) asks for what issue 5
+// also requires and the solver does not reach yet: convergence by Eq. (30)
+// at 1e-3 (the force ratio stays near 1; doc/membrane_validation.md).
+
+#include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/simulator.h>
+#include <gtest/gtest.h>
+
+#include "reference/geotube_reference.h"
+#include "test_utilities.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+using namespace fsgmpm;
+
+namespace
+{
+  std::unique_ptr<ParameterHandler>
+  coarse_parameters(const double end_time)
+  {
+    std::ifstream      in(std::string(FSGMPM_TEST_SOURCE_DIR)
+                     + "/../prm/geotube_A5.56.prm");
+    std::ostringstream text;
+    text << in.rdbuf();
+    auto prm = test_tools::make_parameters(text.str());
+    prm->enter_subsection("Simulation");
+    prm->set("End time", end_time);
+    prm->leave_subsection();
+    prm->enter_subsection("Grid");
+    prm->set("Cell size", 0.16);
+    prm->leave_subsection();
+    prm->enter_subsection("Bodies");
+    prm->enter_subsection("Body 0");
+    prm->enter_subsection("Newtonian fluid");
+    prm->set("Bulk modulus", 2.7e7);
+    prm->leave_subsection();
+    prm->leave_subsection();
+    prm->leave_subsection();
+    prm->enter_subsection("Output");
+    prm->set("Directory", "output_geotube_coarse");
+    prm->set("Quiet", true);
+    prm->leave_subsection();
+    return prm;
+  }
+
+  std::map<std::string, double>
+  monitors(const Simulator<2> &sim)
+  {
+    std::map<std::string, double> m;
+    const auto                    names  = sim.get_scene_monitor_names();
+    const auto                    values = sim.get_scene_monitors();
+    for (unsigned int i = 0; i < names.size(); ++i)
+      m[names[i]] = values[i];
+    return m;
+  }
+} // namespace
+
+TEST(GeotubeCoarse, ShapeTensionPressureMatchAnalytic)
+{
+  auto         prm = coarse_parameters(5.0);
+  Simulator<2> sim(*prm);
+  while (sim.advance())
+    ;
+  ASSERT_TRUE(sim.get_termination() == "end_time"
+              || sim.get_termination() == "dr_converged")
+    << sim.get_diagnosis();
+  const auto   m       = monitors(sim);
+  const auto   ref     = geotube_reference::solve(m.at("membrane_length"),
+                                            m.at("enclosed_area"),
+                                            12000.);
+  const auto   nominal = geotube_reference::solve(9.2, 5.56, 12000.);
+  const double hw      = m.at("height") / m.at("width");
+  std::printf("measured 16 cm, 5 s (%u steps): H = %.4f m, W = %.4f m, H/W = "
+              "%.4f; analytic for the measured A = %.4f m^2, L = %.4f m: "
+              "H/W = %.4f (error %+.4f); nominal H/W = %.4f (error %+.4f)\n",
+              sim.get_step(),
+              m.at("height"),
+              m.at("width"),
+              hw,
+              m.at("enclosed_area"),
+              m.at("membrane_length"),
+              ref.height / ref.width,
+              hw - ref.height / ref.width,
+              nominal.height / nominal.width,
+              hw - nominal.height / nominal.width);
+  std::printf("measured tension %.0f N/m (analytic %.0f, %+.1f%%; nominal "
+              "%.0f, %+.1f%%), max/mean - 1 = %.2e; p_top %.0f Pa (analytic "
+              "%.0f), p_bottom %.0f Pa (analytic %.0f); contact width %.3f m "
+              "(analytic %.3f); fluid volume %.4f m^2; outside %g; Eq. (30) "
+              "ratios %.2e / %.2e\n",
+              m.at("mean_tension"),
+              ref.tension,
+              100 * (m.at("mean_tension") / ref.tension - 1),
+              nominal.tension,
+              100 * (m.at("mean_tension") / nominal.tension - 1),
+              m.at("max_tension") / m.at("mean_tension") - 1,
+              m.at("top_pressure"),
+              ref.top_pressure,
+              m.at("bottom_pressure"),
+              ref.bottom_pressure,
+              m.at("contact_width"),
+              ref.contact_width,
+              m.at("fluid_volume"),
+              m.at("particles_outside"),
+              sim.get_monitors().dr_energy_ratio,
+              sim.get_monitors().dr_force_ratio);
+
+  EXPECT_NEAR(hw, ref.height / ref.width, 0.05);
+  EXPECT_NEAR(m.at("mean_tension") / ref.tension, 1., 0.10);
+  EXPECT_NEAR(m.at("top_pressure"),
+              ref.top_pressure,
+              0.1 * ref.bottom_pressure);
+  EXPECT_NEAR(m.at("bottom_pressure"),
+              ref.bottom_pressure,
+              0.1 * ref.bottom_pressure);
+  EXPECT_LT(m.at("max_tension") / m.at("mean_tension") - 1, 1e-2);
+  EXPECT_EQ(sim.get_monitors().lost_particles, 0u);
+  EXPECT_LE(m.at("particles_outside"), 0.005 * sim.get_particles().size());
+}
+
+TEST(GeotubeCoarseValidation, ConvergesByEq30)
+{
+  auto         prm = coarse_parameters(30.0);
+  Simulator<2> sim(*prm);
+  while (sim.advance())
+    ;
+  std::printf("measured termination %s after %.2f s, Eq. (30) ratios %.2e / "
+              "%.2e\n",
+              sim.get_termination().c_str(),
+              sim.get_time(),
+              sim.get_monitors().dr_energy_ratio,
+              sim.get_monitors().dr_force_ratio);
+  EXPECT_EQ(sim.get_termination(), "dr_converged");
+}
