@@ -313,9 +313,11 @@ namespace fsgmpm
 
   template <int dim>
   std::vector<Point<2>>
-  MembraneDescription<dim>::outline(const double cell_size) const
+  MembraneDescription<dim>::outline(const double cell_size,
+                                    const double size_factor) const
   {
-    const double h = (element_size > 0) ? element_size : 0.4 * cell_size;
+    const double h
+      = size_factor * ((element_size > 0) ? element_size : 0.4 * cell_size);
     // The closed outline in x-y, counter-clockwise, with elements of at
     // most h.
     std::vector<Point<2>> outline;
@@ -372,7 +374,10 @@ namespace fsgmpm
         return;
       }
 
-    const std::vector<Point<2>> outline = this->outline(cell_size);
+    // In 3D the quads of the extrusion are split along a diagonal: both
+    // sides at most h / sqrt(2) keep the diagonal at most h.
+    const double                factor  = (dim == 3) ? 1. / std::sqrt(2.) : 1.;
+    const std::vector<Point<2>> outline = this->outline(cell_size, factor);
     const unsigned int          n       = outline.size();
     if constexpr (dim == 2)
       {
@@ -386,8 +391,10 @@ namespace fsgmpm
       {
         // Rings of the outline along z, each quad split into two triangles
         // with outward normals.
-        const unsigned int nz = std::max(
-          1u, (unsigned int)std::ceil((z_range.second - z_range.first) / h));
+        const unsigned int nz
+          = std::max(1u,
+                     (unsigned int)std::ceil((z_range.second - z_range.first)
+                                             / (factor * h)));
         std::vector<Point<3>> vertices;
         for (unsigned int k = 0; k <= nz; ++k)
           for (const auto &p : outline)

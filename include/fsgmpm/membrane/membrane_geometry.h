@@ -46,8 +46,10 @@ namespace fsgmpm
 
     /// Shape = ellipse or polygon: the closed outline in x-y,
     /// counter-clockwise, with segments of at most the element size.
+    /// @p size_factor scales the element size (3D uses 1/sqrt(2) so that
+    /// the diagonals of the extruded triangles keep the element size).
     std::vector<Point<2>>
-    outline(const double cell_size) const;
+    outline(const double cell_size, const double size_factor = 1.) const;
 
     /// The codimension-one mesh: the closed polygon or ellipse in 2D, the
     /// extruded surface over z in [z0, z1] or the Gmsh surface in 3D.
