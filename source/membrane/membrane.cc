@@ -213,20 +213,40 @@ namespace fsgmpm
       shift += s[k] - S[k] * length / rest;
     shift /= n;
 
-    // Catmull-Rom point at parameter t in [0, 1] of chord e.
+    // Point at fraction t of the arc from node e to node e+1, on the
+    // circle through (e-1, e, e+1) and on the one through (e, e+1, e+2),
+    // averaged: exact on circular pieces, so the enclosed area is kept;
+    // the chord where three nodes are (nearly) collinear.
+    auto on_arc = [](const Point<dim> &a,
+                     const Point<dim> &b,
+                     const Point<dim> &c,
+                     const Point<dim> &from,
+                     const Point<dim> &to,
+                     const double      t) {
+      const Tensor<1, dim> ab = b - a, ac = c - a;
+      const double         d = 2 * (ab[0] * ac[1] - ab[1] * ac[0]);
+      if (std::abs(d) <= 1e-12 * (ab.norm_square() + ac.norm_square()))
+        return Point<dim>(from + t * (to - from));
+      Point<dim> o;
+      o[0] = a[0] + (ac[1] * ab.norm_square() - ab[1] * ac.norm_square()) / d;
+      o[1] = a[1] + (ab[0] * ac.norm_square() - ac[0] * ab.norm_square()) / d;
+      const double r  = o.distance(from);
+      const double t1 = std::atan2(from[1] - o[1], from[0] - o[0]);
+      double       dt = std::atan2(to[1] - o[1], to[0] - o[0]) - t1;
+      dt              = std::remainder(dt, 2 * M_PI); // the short arc
+      Point<dim> x;
+      x[0] = o[0] + r * std::cos(t1 + t * dt);
+      x[1] = o[1] + r * std::sin(t1 + t * dt);
+      return x;
+    };
     auto curve = [&](const unsigned int e, const double t) {
       const Point<dim> &p0 = position[node[(e + n - 1) % n]],
                        &p1 = position[node[e]],
                        &p2 = position[node[(e + 1) % n]],
                        &p3 = position[node[(e + 2) % n]];
-      const double t2 = t * t, t3 = t2 * t;
-      Point<dim>   x;
-      for (unsigned int d = 0; d < dim; ++d)
-        x[d] = 0.5
-               * (2 * p1[d] + (-p0[d] + p2[d]) * t
-                  + (2 * p0[d] - 5 * p1[d] + 4 * p2[d] - p3[d]) * t2
-                  + (-p0[d] + 3 * p1[d] - 3 * p2[d] + p3[d]) * t3);
-      return x;
+      const Point<dim> x   = on_arc(p0, p1, p2, p1, p2, t);
+      const Point<dim> y   = on_arc(p1, p2, p3, p1, p2, t);
+      return Point<dim>(0.5 * (x + y));
     };
 
     std::vector<Point<dim>> moved(n);

@@ -77,9 +77,10 @@ namespace fsgmpm
     /// 2D closed loop, frictionless (slip) contact with the fill: move the
     /// nodes along the membrane so that every cable has the same stretch
     /// (uniform tension, as a fluid that carries no shear at rest allows).
-    /// The curve is kept: nodes are placed on the cubic (Catmull-Rom)
-    /// interpolant through the current nodes, and the mean tangential shift
-    /// is zero. Returns the largest shift. 3D: does nothing.
+    /// The curve is kept: nodes are placed on circular arcs through three
+    /// consecutive nodes (averaged over the two arcs of each chord; exact on
+    /// circular pieces), and the mean tangential shift is zero. Returns the
+    /// largest shift. 3D: does nothing.
     double
     equalize_stretch();
 

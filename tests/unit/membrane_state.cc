@@ -1,0 +1,156 @@
+// Membrane state operations (issue 5), no grid:
+// (1) splitting: a closed loop stretched beyond the split length is split
+//     until every cable is short enough, with the total mass, the total rest
+//     length and the tension of every piece unchanged (the strain of a piece
+//     equals that of its parent);
+// (2) tangential slip: nodes of a circle moved unevenly along it are
+//     redistributed so that every cable has the same stretch: nodes moved
+//     by 2% of a cable length (far more than in one time step) are
+//     equalized to 1e-6 of the tension by three passes (each pass works on
+//     the chords of the previous one, so it contracts the spread rather
+//     than removing it at once), the mean tangential shift stays zero, and
+//     the curve is kept exactly: every node stays on the circle (1e-12) and
+//     the polygon becomes the regular one (area to 1e-9; the uneven
+//     polygon's area was smaller by the chord effect);
+// (3) closed-loop detection and the enclosed area of a circle.
+
+#include <deal.II/grid/tria.h>
+
+#include <fsgmpm/membrane/membrane.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace fsgmpm;
+
+namespace
+{
+  // Closed polygon of n nodes on a circle of radius r (optionally with the
+  // angles perturbed), counter-clockwise.
+  Membrane<2>
+  circle(const unsigned int n, const double r, const double perturbation = 0)
+  {
+    std::vector<Point<2>>    vertices;
+    std::vector<CellData<1>> cells(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double t = 2 * M_PI * (i + perturbation * std::sin(3. * i)) / n;
+        vertices.emplace_back(r * std::cos(t), r * std::sin(t));
+        cells[i].vertices = {i, (i + 1) % n};
+      }
+    Triangulation<1, 2> mesh;
+    mesh.create_triangulation(vertices, cells, SubCellData());
+    MembraneProperties props;
+    props.axial_stiffness = 1e5;
+    props.areal_mass      = 0.5;
+    return Membrane<2>(mesh, props);
+  }
+
+  double
+  total(const std::vector<double> &v)
+  {
+    double s = 0;
+    for (const double x : v)
+      s += x;
+    return s;
+  }
+} // namespace
+
+TEST(MembraneState, SplittingKeepsMassRestLengthAndTension)
+{
+  Membrane<2>  m     = circle(12, 1.);
+  const double mass0 = total(m.mass), rest0 = total(m.rest_size);
+  // Stretch by 30% (a strain no geotextile reaches, so that splitting is
+  // forced): every cable is then longer than 0.2.
+  for (auto &x : m.position)
+    x *= 1.3;
+  m.compute_forces();
+  const double       tension0 = m.tension[0];
+  const unsigned int n_new    = m.split_long_elements(0.2, 0);
+  m.compute_forces();
+  std::printf("measured: %u new nodes, longest cable %.4f, mass change %.2e, "
+              "rest length change %.2e, tension %.6f -> [%.6f, %.6f]\n",
+              n_new,
+              m.max_element_length(),
+              total(m.mass) / mass0 - 1,
+              total(m.rest_size) / rest0 - 1,
+              tension0,
+              *std::min_element(m.tension.begin(), m.tension.end()),
+              *std::max_element(m.tension.begin(), m.tension.end()));
+  EXPECT_GT(n_new, 0u);
+  EXPECT_LE(m.max_element_length(), 0.2);
+  EXPECT_NEAR(total(m.mass), mass0, 1e-12 * mass0);
+  EXPECT_NEAR(total(m.rest_size), rest0, 1e-12 * rest0);
+  EXPECT_TRUE(m.is_closed_loop());
+  // Midpoints lie on the chords: every piece keeps the parent's strain.
+  for (const double t : m.tension)
+    EXPECT_NEAR(t, tension0, 1e-9 * tension0);
+}
+
+TEST(MembraneState, SlipEqualizesStretchAndKeepsTheCurve)
+{
+  const unsigned int n = 64;
+  Membrane<2>        m = circle(n, 1.);
+  // Move the nodes unevenly along the circle (same curve, uneven stretch)
+  // and stretch by 1%.
+  std::vector<double> angle(n);
+  for (unsigned int i = 0; i < n; ++i)
+    {
+      angle[i] = 2 * M_PI * (i + 0.02 * std::sin(3. * i)) / n;
+      m.position[i]
+        = Point<2>(1.01 * std::cos(angle[i]), 1.01 * std::sin(angle[i]));
+    }
+  const double area0       = m.enclosed_area();
+  double       mean_angle0 = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    mean_angle0 += std::atan2(m.position[i][1], m.position[i][0]) / n;
+  m.compute_forces();
+  const double spread0
+    = *std::max_element(m.tension.begin(), m.tension.end())
+      - *std::min_element(m.tension.begin(), m.tension.end());
+
+  double moved = 0;
+  for (unsigned int pass = 0; pass < 3; ++pass)
+    {
+      moved = std::max(moved, m.equalize_stretch());
+      m.compute_forces();
+      std::printf("measured pass %u: tension spread %.3e N/m\n",
+                  pass,
+                  *std::max_element(m.tension.begin(), m.tension.end())
+                    - *std::min_element(m.tension.begin(), m.tension.end()));
+    }
+  const double t_max = *std::max_element(m.tension.begin(), m.tension.end());
+  const double t_min = *std::min_element(m.tension.begin(), m.tension.end());
+  double       mean_angle = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    mean_angle += std::atan2(m.position[i][1], m.position[i][0]) / n;
+  std::printf("measured: tension spread %.1f -> %.2e N/m (mean %.1f), "
+              "largest move %.4f m, area change %.2e, mean angle shift "
+              "%.2e\n",
+              spread0,
+              t_max - t_min,
+              0.5 * (t_max + t_min),
+              moved,
+              m.enclosed_area() / area0 - 1,
+              mean_angle - mean_angle0);
+  EXPECT_GT(spread0, 100.);
+  EXPECT_LT(t_max - t_min, 1e-6 * t_max);
+  const double regular = 0.5 * n * 1.01 * 1.01 * std::sin(2 * M_PI / n);
+  std::printf("measured: area %.12f, regular polygon %.12f, uneven %.12f\n",
+              m.enclosed_area(),
+              regular,
+              area0);
+  EXPECT_NEAR(m.enclosed_area(), regular, 1e-9 * regular);
+  for (const auto &x : m.position)
+    EXPECT_NEAR(x.norm(), 1.01, 1e-12);
+  EXPECT_LT(std::abs(mean_angle - mean_angle0), 1e-3);
+}
+
+TEST(MembraneState, ClosedLoopAndArea)
+{
+  Membrane<2> m = circle(256, 2.);
+  EXPECT_TRUE(m.is_closed_loop());
+  const double exact = 0.5 * 256 * 4 * std::sin(2 * M_PI / 256); // polygon
+  EXPECT_NEAR(m.enclosed_area(), exact, 1e-12 * exact);
+}
