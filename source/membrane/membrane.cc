@@ -344,11 +344,11 @@ namespace fsgmpm
   Membrane<dim>::enclosed_area() const
   {
     // Shoelace over the elements (in x-y): each directed edge contributes.
+    if (dim != 2)
+      return 0;
     double a = 0;
     for (const auto &el : elements)
       {
-        if (dim != 2)
-          return 0;
         const auto &p = position[el[0]];
         const auto &q = position[el[dim - 1]];
         a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
