@@ -1,5 +1,6 @@
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/particles/body_shape.h>
 
 #include <algorithm>
 #include <cmath>
@@ -166,20 +167,11 @@ namespace fsgmpm
     double outside = 0;
     if (dim == 2)
       {
-        const auto poly = membrane.ordered_nodes();
-        for (unsigned int q = 0; q < particles.size(); ++q)
-          {
-            const auto &x  = particles.position[q];
-            bool        in = false;
-            for (unsigned int i = 0, j = poly.size() - 1; i < poly.size();
-                 j = i++)
-              if ((poly[i][1] > x[1]) != (poly[j][1] > x[1])
-                  && x[0] < (poly[j][0] - poly[i][0]) * (x[1] - poly[i][1])
-                                / (poly[j][1] - poly[i][1])
-                              + poly[i][0])
-                in = !in;
-            outside += !in;
-          }
+        std::vector<Point<2>> poly;
+        for (const auto &x : membrane.ordered_nodes())
+          poly.emplace_back(x[0], x[1]);
+        for (const auto &x : particles.position)
+          outside += !inside_polygon(poly, Point<2>(x[0], x[1]));
       }
 
     return {{"particles_outside", outside},

@@ -254,13 +254,8 @@ namespace fsgmpm
     }
     if (enabled && shape == "polygon")
       {
-        for (const auto &item :
-             Utilities::split_string_list(prm.get("Polygon vertices"), ';'))
-          polygon.emplace_back(
-            parse_vector<2>(item, "Membrane/Polygon vertices"));
-        AssertThrow(polygon.size() >= 3,
-                    ExcMessage("Membrane/Polygon vertices needs at least "
-                               "three vertices 'x0, y0; x1, y1; x2, y2'."));
+        polygon = parse_polygon(prm.get("Polygon vertices"),
+                                "Membrane/Polygon vertices");
         try
           {
             PolygonShape check(polygon);

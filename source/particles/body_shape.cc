@@ -144,7 +144,7 @@ namespace fsgmpm
   }
 
   bool
-  PolygonShape::inside(const Point<2> &x) const
+  inside_polygon(const std::vector<Point<2>> &vertices, const Point<2> &x)
   {
     bool               in = false;
     const unsigned int n  = vertices.size();
@@ -156,6 +156,12 @@ namespace fsgmpm
           in = !in;
       }
     return in;
+  }
+
+  bool
+  PolygonShape::inside(const Point<2> &x) const
+  {
+    return inside_polygon(vertices, x);
   }
 
   std::vector<Point<2>>

@@ -143,18 +143,6 @@ namespace fsgmpm
       return Point<dim>(parse_vector<dim>(text, path));
     }
 
-    std::vector<Point<2>>
-    parse_polygon(const std::string &text, const std::string &path)
-    {
-      std::vector<Point<2>> vertices;
-      for (const auto &item : Utilities::split_string_list(text, ';'))
-        vertices.emplace_back(parse_vector<2>(item, path));
-      AssertThrow(vertices.size() >= 3,
-                  ExcMessage(path
-                             + " needs at least three vertices "
-                               "'x0, y0; x1, y1; x2, y2'."));
-      return vertices;
-    }
   } // namespace
 
 

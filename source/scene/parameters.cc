@@ -373,6 +373,19 @@ namespace fsgmpm
 
   template struct Parameters<2>;
   template struct Parameters<3>;
+  std::vector<Point<2>>
+  parse_polygon(const std::string &text, const std::string &path)
+  {
+    std::vector<Point<2>> vertices;
+    for (const auto &item : Utilities::split_string_list(text, ';'))
+      vertices.emplace_back(parse_vector<2>(item, path));
+    AssertThrow(vertices.size() >= 3,
+                ExcMessage(path
+                           + " needs at least three vertices "
+                             "'x0, y0; x1, y1; x2, y2'."));
+    return vertices;
+  }
+
   template Tensor<1, 2>
   parse_vector<2>(const std::string &, const std::string &);
   template Tensor<1, 3>

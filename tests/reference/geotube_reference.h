@@ -82,7 +82,7 @@ namespace geotube_reference
     {
       const double radius = 1. / (c + u[1]);
       const double cx     = std::cos(phi) * radius;
-      return {cx, std::sin(phi) * radius, radius, u[1] * cx};
+      return {{cx, std::sin(phi) * radius, radius, u[1] * cx}};
     }
 
     // What one pass over the right half gives (scale-free).
@@ -129,10 +129,10 @@ namespace geotube_reference
       // Absolute floors (relative to the natural size of each component:
       // lengths ~ 1/(1 + c), q ~ length^2) so growth from zero is cheap.
       const double length = 1. / (1. + c);
-      const State  atol   = {rtol * 1e-3 * length,
-                             rtol * 1e-3 * length,
-                             rtol * 1e-3 * length,
-                             rtol * 1e-3 * length * length};
+      const State  atol   = {{rtol * 1e-3 * length,
+                              rtol * 1e-3 * length,
+                              rtol * 1e-3 * length,
+                              rtol * 1e-3 * length * length}};
 
       double       phi = phi0;
       unsigned int n   = 0;
@@ -175,13 +175,13 @@ namespace geotube_reference
             }
 
           // Difference between the 5th and embedded 4th order solutions.
-          constexpr std::array<double, 7> e = {71. / 57600,
-                                               0,
-                                               -71. / 16695,
-                                               71. / 1920,
-                                               -17253. / 339200,
-                                               22. / 525,
-                                               -1. / 40};
+          constexpr std::array<double, 7> e = {{71. / 57600,
+                                                0,
+                                                -71. / 16695,
+                                                71. / 1920,
+                                                -17253. / 339200,
+                                                22. / 525,
+                                                -1. / 40}};
 
           double err = 0;
           for (int i = 0; i < 4; ++i)
@@ -203,7 +203,7 @@ namespace geotube_reference
               phi = last ? phi1 : phi + step;
               u   = u_new;
               if (points)
-                points->push_back({u[0], u[1]});
+                points->push_back({{u[0], u[1]}});
               if (step == h || factor < 1)
                 h = step * factor;
             }
@@ -220,14 +220,14 @@ namespace geotube_reference
           const double       length  = 0)
     {
       HalfCurve    curve;
-      State        u        = {0, 0, 0, 0};
+      State        u        = {{0, 0, 0, 0}};
       double       h        = 1e-3 * std::min(1., c); // curvature scale ~ c
       const double inf      = std::numeric_limits<double>::infinity();
       const double max_dphi = samples > 0 ? pi / samples : inf;
       const double max_ds   = samples > 0 ? length / samples : inf;
       auto *const  points   = samples > 0 ? &curve.points : nullptr;
       if (points)
-        points->push_back({0, 0});
+        points->push_back({{0, 0}});
 
       // Split at pi/2, where x is largest, to get the width exactly.
       integrate(c, 0, pi / 2, u, h, max_dphi, max_ds, points);
@@ -352,11 +352,11 @@ namespace geotube_reference
     const unsigned int n_strip = static_cast<unsigned int>(
       std::max(1., std::ceil(s.contact_width / (L / (2. * samples)))));
     for (unsigned int i = 0; i < n_strip; ++i)
-      s.shape.push_back({-half_b + s.contact_width * i / n_strip, 0.});
+      s.shape.push_back({{-half_b + s.contact_width * i / n_strip, 0.}});
     for (auto it = p.rbegin(); it != p.rend(); ++it)
-      s.shape.push_back({l * (*it)[0], l * (curve.height - (*it)[1])});
+      s.shape.push_back({{l * (*it)[0], l * (curve.height - (*it)[1])}});
     for (std::size_t i = 1; i + 1 < p.size(); ++i)
-      s.shape.push_back({-l * p[i][0], l * (curve.height - p[i][1])});
+      s.shape.push_back({{-l * p[i][0], l * (curve.height - p[i][1])}});
     return s;
   }
 } // namespace geotube_reference

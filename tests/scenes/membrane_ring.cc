@@ -93,8 +93,10 @@ namespace
     EXPECT_EQ(m.at("particles_outside"), 0.);
     EXPECT_EQ(sim.get_monitors().lost_particles, 0u);
     if (smoothing == "none")
-      EXPECT_LT(sim.get_monitors().kinetic_energy,
-                1e-3 * initial_strain_energy);
+      {
+        EXPECT_LT(sim.get_monitors().kinetic_energy,
+                  1e-3 * initial_strain_energy);
+      }
   }
 } // namespace
 

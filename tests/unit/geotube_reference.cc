@@ -32,7 +32,7 @@ namespace
         area += 0.5 * (a[0] * b[1] - b[0] * a[1]);
         perimeter += std::hypot(b[0] - a[0], b[1] - a[1]);
       }
-    return {area, perimeter};
+    return {{area, perimeter}};
   }
 } // namespace
 

@@ -63,6 +63,12 @@ namespace fsgmpm
     Tensor<1, dim> semi_axes;
   };
 
+  /// Even-odd test: is @p x inside the closed polygon @p vertices (no
+  /// validity check, so it also serves deformed outlines such as a
+  /// membrane's)?
+  bool
+  inside_polygon(const std::vector<Point<2>> &vertices, const Point<2> &x);
+
   /// A simple closed polygon in 2D (even-odd rule); throws if it has fewer
   /// than three vertices or intersects itself.
   class PolygonShape : public BodyShape<2>

@@ -80,6 +80,11 @@ namespace fsgmpm
   Tensor<1, dim>
   parse_vector(const std::string &text, const std::string &path);
 
+  /// Read a closed 2D polygon 'x0, y0; x1, y1; ...' (at least three
+  /// vertices), throwing a message that names @p path.
+  std::vector<Point<2>>
+  parse_polygon(const std::string &text, const std::string &path);
+
   /// The dimension requested by Simulation/Dimension.
   unsigned int
   get_dimension(ParameterHandler &prm);
