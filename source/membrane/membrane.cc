@@ -173,7 +173,10 @@ namespace fsgmpm
 
             rest_size[e] *= 0.5;
             elements[e][1] = m;
-            elements.insert(elements.begin() + e + 1, {{m, b}});
+            std::array<unsigned int, dim> piece{};
+            piece[0] = m;
+            piece[1] = b;
+            elements.insert(elements.begin() + e + 1, piece);
             rest_size.insert(rest_size.begin() + e + 1, rest_size[e]);
             tension.insert(tension.begin() + e + 1, tension[e]);
             minor_tension.insert(minor_tension.begin() + e + 1, 0.);
@@ -303,25 +306,33 @@ namespace fsgmpm
 
 
   template <int dim>
-  std::vector<double>
+  std::vector<SymmetricTensor<2, dim>>
   Membrane<dim>::nodal_stiffness() const
   {
-    std::vector<double> k(n_nodes(), 0.);
-    const double        EA = properties.axial_stiffness;
-    for (const auto &el : elements)
+    std::vector<SymmetricTensor<2, dim>> k(n_nodes());
+    const double                         EA = properties.axial_stiffness;
+    for (unsigned int e = 0; e < elements.size(); ++e)
       for (unsigned int i = 0; i < dim; ++i)
         {
-          const unsigned int j = (i + 1) % dim;
-          const double       l = position[el[i]].distance(position[el[j]]);
+          const auto                   &el = elements[e];
+          const unsigned int            j  = (i + 1) % dim;
+          const Tensor<1, dim>          d  = position[el[j]] - position[el[i]];
+          const double                  l  = d.norm();
+          const SymmetricTensor<2, dim> tt
+            = symmetrize(outer_product(d / l, d / l));
           // An edge shared by two triangles counts twice: a safe bound.
-          k[el[i]] += EA / l;
-          k[el[j]] += EA / l;
+          const SymmetricTensor<2, dim> k_edge
+            = (EA / l) * tt
+              + (std::max(tension[e], 0.) / l)
+                  * (unit_symmetric_tensor<dim>() - tt);
+          k[el[i]] += k_edge;
+          k[el[j]] += k_edge;
           if (dim == 2)
             break;
         }
     if (std::isfinite(ground_level))
       for (auto &ka : k)
-        ka += ground_stiffness;
+        ka[1][1] += ground_stiffness;
     return k;
   }
 

@@ -39,8 +39,15 @@ namespace fsgmpm
                 damping[d] = -alpha * std::abs(unbalanced[d])
                              * (v_old[d] > 0 ? 1. : -1.);
 
-          Tensor<1, dim> v_new
-            = v_old + (dt / (m + nodes.added_mass[i])) * (unbalanced + damping);
+          // Mass scaling: the fictitious inertia is directional.
+          const SymmetricTensor<2, dim> &added = nodes.added_mass[i];
+          Tensor<1, dim>                 v_new = v_old;
+          if (added.norm() == 0)
+            v_new += (dt / m) * (unbalanced + damping);
+          else
+            v_new += dt
+                     * (invert(m * unit_symmetric_tensor<dim>() + added)
+                        * (unbalanced + damping));
           constraints.apply(i, v_new);
           nodes.velocity[i]     = v_new;
           nodes.acceleration[i] = (v_new - v_old) / dt;

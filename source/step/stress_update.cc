@@ -10,8 +10,8 @@ namespace fsgmpm
   {
     template <int dim>
     void
-    stress_update(const BackgroundGrid<dim>                    &grid,
-                  const NodalFields<dim>                       &nodes,
+    stress_update(const BackgroundGrid<dim> &grid,
+                  const NodalFields<dim> & /*nodes*/,
                   const std::vector<std::unique_ptr<Material>> &materials,
                   const std::vector<MaterialOptions>           &options,
                   const double                                  dt,

@@ -12,7 +12,12 @@
 //     the curve is kept exactly: every node stays on the circle (1e-12) and
 //     the polygon becomes the regular one (area to 1e-9; the uneven
 //     polygon's area was smaller by the chord effect);
-// (3) closed-loop detection and the enclosed area of a circle.
+// (3) closed-loop detection and the enclosed area of a circle;
+// (4) the directional nodal stiffness of a taut regular polygon (the mass
+//     scaling and the time-step bound use it) against its closed form: the
+//     two cables at +-theta = pi/n from the tangent give 2 (EA/l cos^2 +
+//     T/l sin^2) along the tangent and 2 (EA/l sin^2 + T/l cos^2) along the
+//     normal, to 1e-12; the ground penalty adds its stiffness along y.
 
 #include <deal.II/grid/tria.h>
 
@@ -29,7 +34,10 @@ namespace
   // Closed polygon of n nodes on a circle of radius r (optionally with the
   // angles perturbed), counter-clockwise.
   Membrane<2>
-  circle(const unsigned int n, const double r, const double perturbation = 0)
+  circle(const unsigned int n,
+         const double       r,
+         const double       perturbation   = 0,
+         const double       initial_strain = 0)
   {
     std::vector<Point<2>>    vertices;
     std::vector<CellData<1>> cells(n);
@@ -44,6 +52,7 @@ namespace
     MembraneProperties props;
     props.axial_stiffness = 1e5;
     props.areal_mass      = 0.5;
+    props.initial_strain  = initial_strain;
     return Membrane<2>(mesh, props);
   }
 
@@ -153,4 +162,43 @@ TEST(MembraneState, ClosedLoopAndArea)
   EXPECT_TRUE(m.is_closed_loop());
   const double exact = 0.5 * 256 * 4 * std::sin(2 * M_PI / 256); // polygon
   EXPECT_NEAR(m.enclosed_area(), exact, 1e-12 * exact);
+}
+
+
+TEST(MembraneState, DirectionalNodalStiffness)
+{
+  const unsigned int n = 24;
+  const double       r = 1.5, strain = 0.01;
+  Membrane<2>        m = circle(n, r, 0, strain);
+  m.compute_forces();
+  const double EA = m.properties.axial_stiffness;
+  const double l  = 2 * r * std::sin(M_PI / n);
+  const double T  = EA * strain;
+  ASSERT_NEAR(m.tension[0], T, 1e-9 * T);
+  const double c = std::cos(M_PI / n), s = std::sin(M_PI / n);
+  const double k_t = 2 * (EA / l * c * c + T / l * s * s);
+  const double k_n = 2 * (EA / l * s * s + T / l * c * c);
+
+  const auto k = m.nodal_stiffness();
+  ASSERT_EQ(k.size(), n);
+  for (unsigned int a = 0; a < n; ++a)
+    {
+      const Tensor<1, 2> x      = m.position[a];
+      const Tensor<1, 2> normal = x / x.norm();
+      const Tensor<1, 2> tangent({-normal[1], normal[0]});
+      EXPECT_NEAR(tangent * (k[a] * tangent), k_t, 1e-12 * k_t);
+      EXPECT_NEAR(normal * (k[a] * normal), k_n, 1e-12 * k_t);
+      EXPECT_NEAR(tangent * (k[a] * normal), 0., 1e-12 * k_t);
+    }
+
+  m.ground_level     = -r;
+  m.ground_stiffness = 1e7;
+  const auto kg      = m.nodal_stiffness();
+  for (unsigned int a = 0; a < n; ++a)
+    {
+      const SymmetricTensor<2, 2> diff = kg[a] - k[a];
+      EXPECT_NEAR(diff[1][1], 1e7, 1e-6);
+      EXPECT_NEAR(diff[0][0], 0., 1e-6);
+      EXPECT_NEAR(diff[0][1], 0., 1e-6);
+    }
 }

@@ -1,6 +1,7 @@
 #ifndef fsgmpm_grid_nodal_fields_h
 #define fsgmpm_grid_nodal_fields_h
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <vector>
@@ -26,7 +27,7 @@ namespace fsgmpm
       external_force.assign(n_nodes, Tensor<1, dim>());
       velocity.assign(n_nodes, Tensor<1, dim>());
       acceleration.assign(n_nodes, Tensor<1, dim>());
-      added_mass.assign(n_nodes, 0.);
+      added_mass.assign(n_nodes, SymmetricTensor<2, dim>());
       active_stamp.assign(n_nodes, 0u);
       active_nodes.clear();
       stamp = 0;
@@ -44,7 +45,7 @@ namespace fsgmpm
           external_force[i] = Tensor<1, dim>();
           velocity[i]       = Tensor<1, dim>();
           acceleration[i]   = Tensor<1, dim>();
-          added_mass[i]     = 0.;
+          added_mass[i]     = SymmetricTensor<2, dim>();
         }
       active_nodes.clear();
       ++stamp;
@@ -74,9 +75,11 @@ namespace fsgmpm
     std::vector<Tensor<1, dim>> velocity;
     /// Constrained nodal acceleration a^n of Eq. (18).
     std::vector<Tensor<1, dim>> acceleration;
-    /// Fictitious inertia of dynamic relaxation (mass scaling): it slows
-    /// the node's acceleration but carries no weight and no momentum.
-    std::vector<double> added_mass;
+    /// Fictitious inertia of dynamic relaxation (mass scaling), a tensor so
+    /// that it acts only in the directions in which a stiff membrane needs
+    /// it (along the cables): a = (m I + added_mass)^-1 F. It slows the
+    /// node's acceleration but carries no weight and no momentum.
+    std::vector<SymmetricTensor<2, dim>> added_mass;
 
     std::vector<unsigned int> active_nodes;
     std::vector<unsigned int> active_stamp;

@@ -2,6 +2,7 @@
 #define fsgmpm_membrane_membrane_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
@@ -92,9 +93,12 @@ namespace fsgmpm
     double
     element_size(const unsigned int e) const;
 
-    /// Sum over the elements of EA / (current edge length), per node: the
-    /// stiffness that the nodal time-step bound needs.
-    std::vector<double>
+    /// Per node, the sum over its element edges of the axial stiffness
+    /// EA/l t(x)t along the edge and the geometric stiffness T/l (I - t(x)t)
+    /// across it (a taut cable resists sideways motion with its tension),
+    /// plus the ground penalty along y: the directional stiffness that the
+    /// nodal time-step bound and the mass scaling need.
+    std::vector<SymmetricTensor<2, dim>>
     nodal_stiffness() const;
 
     /// Total current length (2D) or area (3D).

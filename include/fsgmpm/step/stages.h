@@ -178,13 +178,14 @@ namespace fsgmpm
                  NodalFields<dim>          &nodes);
 
     /// Nodal time-step bound of SPEC 2 with the membrane: min over grid
-    /// nodes of 2 sqrt(m_i / k_i), k_i the membrane stiffness projected to
-    /// node i (Gershgorin; the nodal mass includes the fluid's added mass).
-    /// Without the Courant factor.
-    /// If @p dt_floor > 0 (dynamic relaxation with mass scaling), nodes
-    /// whose bound would fall below dt_floor get the fictitious inertia
-    /// NodalFields::added_mass = k_i dt_floor^2 / 4 - m_i instead, and the
-    /// returned bound is at least dt_floor.
+    /// nodes and directions of 2 sqrt(m_i / k), k an eigenvalue of the
+    /// membrane stiffness projected to node i (block Gershgorin; the nodal
+    /// mass includes the fluid's added mass). Without the Courant factor.
+    /// If @p dt_floor > 0 (dynamic relaxation with mass scaling), the
+    /// directions whose bound would fall below dt_floor get the fictitious
+    /// inertia NodalFields::added_mass = (k dt_floor^2 / 4 - m_i) e(x)e
+    /// instead (along the cables, not across them), and the returned bound
+    /// is at least dt_floor.
     template <int dim>
     double
     membrane_time_step(const BackgroundGrid<dim> &grid,
