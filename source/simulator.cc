@@ -573,17 +573,19 @@ namespace fsgmpm
       monitors.external_work += grid_result.external_work_increment;
       monitors.dissipated_energy += grid_result.damping_work_increment;
 
-      // Eq. (30) from the nodal (remapped) velocities.
+      // Eq. (30) and the rest criterion from the nodal (remapped)
+      // velocities.
       double nodal_ke = 0;
       for (const unsigned int i : nodes.active_nodes)
         nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
-      monitors.dr_energy_ratio = (monitors.external_work > 0)
-                                   ? nodal_ke / monitors.external_work
-                                   : std::numeric_limits<double>::infinity();
-      monitors.dr_force_ratio  = (grid_result.external_norm_sq > 0)
-                                   ? std::sqrt(grid_result.unbalanced_norm_sq
+      monitors.grid_kinetic_energy = nodal_ke;
+      monitors.dr_energy_ratio     = (monitors.external_work > 0)
+                                       ? nodal_ke / monitors.external_work
+                                       : std::numeric_limits<double>::infinity();
+      monitors.dr_force_ratio      = (grid_result.external_norm_sq > 0)
+                                       ? std::sqrt(grid_result.unbalanced_norm_sq
                                               / grid_result.external_norm_sq)
-                                   : std::numeric_limits<double>::infinity();
+                                       : std::numeric_limits<double>::infinity();
 
       if (params.kinetic_damping
           && monitors.kinetic_energy < previous_kinetic_energy)
@@ -612,10 +614,11 @@ namespace fsgmpm
     // At rest: after it has moved, the kinetic energy stays below the
     // tolerance for the convergence window (a single step at a turning
     // point of a bounce is not rest).
-    max_kinetic_energy = std::max(max_kinetic_energy, monitors.kinetic_energy);
+    max_kinetic_energy
+      = std::max(max_kinetic_energy, monitors.grid_kinetic_energy);
     const double rest_energy = params.rest_tolerance * initial_potential_energy;
     rest_steps               = (max_kinetic_energy > rest_energy
-                  && monitors.kinetic_energy < rest_energy)
+                  && monitors.grid_kinetic_energy < rest_energy)
                                  ? rest_steps + 1
                                  : 0;
     if (params.stop_when_at_rest && rest_steps >= params.convergence_window)
@@ -705,7 +708,8 @@ namespace fsgmpm
                                         "dissipated_energy",
                                         "dr_energy_ratio",
                                         "dr_force_ratio",
-                                        "lost_particles"};
+                                        "lost_particles",
+                                        "grid_kinetic_energy"};
     if (detecting)
       columns.push_back("free_surface_fraction");
     for (const auto &name : scene_monitors->names())
@@ -723,7 +727,8 @@ namespace fsgmpm
                                  monitors.dissipated_energy,
                                  monitors.dr_energy_ratio,
                                  monitors.dr_force_ratio,
-                                 double(monitors.lost_particles)};
+                                 double(monitors.lost_particles),
+                                 monitors.grid_kinetic_energy};
       if (detecting)
         row.push_back(monitors.free_surface_fraction);
       for (const double v : scene_monitors->evaluate(particles, membrane.get()))

@@ -100,16 +100,17 @@ namespace fsgmpm
                         "end_time: run to End time; dr_converged: stop "
                         "earlier when both Eq. (30) ratios stay below their "
                         "tolerances for the convergence window; at_rest: "
-                        "stop when, after moving, the kinetic energy stays "
+                        "stop when, after moving, the kinetic energy of the "
+                        "grid motion (monitor grid_kinetic_energy) stays "
                         "below Rest tolerance times the initial potential "
                         "energy (above the mesh's lowest point) for "
                         "Damping/Convergence window steps.");
       prm.declare_entry("Rest tolerance",
                         "1e-6",
                         Patterns::Double(0),
-                        "Termination = at_rest: kinetic energy / initial "
-                        "potential energy below which the material is at "
-                        "rest.");
+                        "Termination = at_rest: grid kinetic energy / "
+                        "initial potential energy below which the material "
+                        "is at rest.");
       prm.declare_entry("Number of threads",
                         "0",
                         Patterns::Integer(0),

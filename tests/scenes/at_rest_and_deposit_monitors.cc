@@ -6,7 +6,9 @@
 // and final_height = 0.2 m up to the elastic settlement (rho g H / M < 2e-3 of
 // H) and half a point spacing (< 0.005 m); the run ends "at_rest" with a
 // kinetic energy below 1e-6 of the initial potential energy for the convergence
-// window (not at a single turning point of the bounce).
+// window (not at a single turning point of the bounce), measured on the grid
+// motion (grid_kinetic_energy); the points' kinetic energy, which also holds
+// the FLIP fluctuations that move nothing, is printed.
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
@@ -69,8 +71,10 @@ end
   std::cout << "[ measured ] at rest after " << sim.get_time() << " s ("
             << sim.get_step() << " steps): runout " << m[0]
             << " m, final height " << m[1] << " m, kinetic energy "
-            << sim.get_monitors().kinetic_energy << " J/m" << std::endl;
-  EXPECT_LT(sim.get_monitors().kinetic_energy, 1e-6 * pe0);
+            << sim.get_monitors().grid_kinetic_energy << " J/m (grid), "
+            << sim.get_monitors().kinetic_energy << " J/m (points)"
+            << std::endl;
+  EXPECT_LT(sim.get_monitors().grid_kinetic_energy, 1e-6 * pe0);
   EXPECT_NEAR(m[0], 0.7, 0.005);
   EXPECT_NEAR(m[1], 0.2, 0.005);
 }
