@@ -26,13 +26,15 @@ namespace fsgmpm
                            const double phi,
                            const double psi,
                            const double c,
-                           const double density)
+                           const double density,
+                           const double max_volume_ratio)
     : density(density)
     , elasticity(E, nu)
     , yield{std::sin(phi * degree), 2 * c * std::cos(phi * degree)}
     , potential{std::sin(psi * degree), 0.}
     , apex(phi > 0 ? c / std::tan(phi * degree)
                    : std::numeric_limits<double>::infinity())
+    , max_volume_ratio(max_volume_ratio)
   {}
 
 
@@ -58,6 +60,14 @@ namespace fsgmpm
                       Patterns::Double(0, 90),
                       "psi in degrees, 0 <= psi <= phi.");
     prm.declare_entry("Cohesion", "0", Patterns::Double(0), "c in Pa (>= 0).");
+    prm.declare_entry("Maximum volume ratio",
+                      "1.2",
+                      Patterns::Double(1),
+                      "Cap on a point's volume ratio V/V0 (> 1): points "
+                      "that come apart at the apex (tension) stop growing "
+                      "here; uncapped they reached 100 V0 at a flow front "
+                      "and made the run unstable when pushed back into "
+                      "contact.");
     prm.leave_subsection();
   }
 
@@ -69,11 +79,12 @@ namespace fsgmpm
                       const std::string &path)
   {
     prm.enter_subsection("Mohr-Coulomb");
-    const double E   = prm.get_double("Young's modulus");
-    const double nu  = prm.get_double("Poisson's ratio");
-    const double phi = prm.get_double("Friction angle");
-    const double psi = prm.get_double("Dilatancy angle");
-    const double c   = prm.get_double("Cohesion");
+    const double E     = prm.get_double("Young's modulus");
+    const double nu    = prm.get_double("Poisson's ratio");
+    const double phi   = prm.get_double("Friction angle");
+    const double psi   = prm.get_double("Dilatancy angle");
+    const double c     = prm.get_double("Cohesion");
+    const double J_max = prm.get_double("Maximum volume ratio");
     prm.leave_subsection();
     const std::string p = path + "/Mohr-Coulomb/";
     AssertThrow(E > 0, ExcMessage(p + "Young's modulus must be positive."));
@@ -91,7 +102,10 @@ namespace fsgmpm
                 ExcMessage(p
                            + "a material with no friction and no cohesion "
                              "has no strength."));
-    return std::make_unique<MohrCoulomb>(E, nu, phi, psi, c, density);
+    AssertThrow(J_max > 1,
+                ExcMessage(p + "Maximum volume ratio must exceed 1; got "
+                           + std::to_string(J_max) + "."));
+    return std::make_unique<MohrCoulomb>(E, nu, phi, psi, c, density, J_max);
   }
 
 
@@ -202,12 +216,12 @@ namespace fsgmpm
 
 
   double
-  MohrCoulomb::wave_speed(const double /*rho*/) const
+  MohrCoulomb::wave_speed(const double rho) const
   {
-    // With the reference density: conservative under compression, and a
-    // solid that has come apart (volume grown at the apex) does not carry
-    // faster waves.
-    return std::sqrt(elasticity.p_wave_modulus() / density);
+    // The nodal stiffness-to-mass ratio of a point scales with V/m = 1/rho:
+    // an expanded point (up to max_volume_ratio) is stiffer per mass; a
+    // compressed one is bounded by the reference density (conservative).
+    return std::sqrt(elasticity.p_wave_modulus() / std::min(rho, density));
   }
 
 

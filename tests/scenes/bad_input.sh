@@ -60,6 +60,7 @@ expect_error "self-intersecting polygon" "Bodies/Body 0/Polygon vertices: The po
 expect_error "zero column aspect ratio" "Bodies/Body 0: Column width and Column aspect ratio must be positive" --set "Bodies/Body 0/Shape=column" --set "Bodies/Body 0/Column aspect ratio=0"
 expect_error "friction angle >= 90" "Friction angle" "$2/../prm/granular_column_collapse.prm" --set "Bodies/Body 0/Mohr-Coulomb/Friction angle=95"
 expect_error "dilatancy above friction" "Dilatancy angle must lie in" "$2/../prm/granular_column_collapse.prm" --set "Bodies/Body 0/Mohr-Coulomb/Dilatancy angle=40"
+expect_error "volume cap not above 1" "Maximum volume ratio must exceed 1" "$2/../prm/granular_column_collapse.prm" --set "Bodies/Body 0/Mohr-Coulomb/Maximum volume ratio=1"
 expect_error "unknown option" "Unknown option" --frobnicate
 g="$2/../prm/geotube_A5.56.prm"
 expect_error "membrane area above the circle's" "Membrane/Circumference and Enclosed area: .*cannot enclose" "$g" --set "Membrane/Enclosed area=7"

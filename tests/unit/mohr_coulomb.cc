@@ -166,3 +166,21 @@ TEST(MohrCoulomb, EdgeReturnsAreExact)
       EXPECT_NEAR(f.value({{e[0], e[1], e[2]}}, 0, 1), 0, 1e-10 * 8e5);
     }
 }
+
+// A point that comes apart at the apex stops growing at the cap, and the
+// time-step wave speed follows the stiffness-to-mass ratio V/m of an
+// expanded point (and keeps the reference density under compression).
+TEST(MohrCoulomb, VolumeCapAndWaveSpeed)
+{
+  const double      rho = 1500, J_max = 1.2;
+  const MohrCoulomb m(E, nu, phi, 0, 0, rho, J_max);
+  EXPECT_EQ(m.admissible_volume_ratio(116.), J_max);
+  EXPECT_EQ(m.admissible_volume_ratio(1.05), 1.05);
+  EXPECT_EQ(m.admissible_volume_ratio(0.99), 0.99);
+  const double M = m.elasticity.p_wave_modulus();
+  EXPECT_NEAR(m.wave_speed(rho / J_max), std::sqrt(M * J_max / rho), 1e-12);
+  EXPECT_NEAR(m.wave_speed(1.1 * rho), std::sqrt(M / rho), 1e-12);
+  // Unit tests and direct construction: no cap unless asked for.
+  const MohrCoulomb uncapped(E, nu, phi, 0, 0, rho);
+  EXPECT_EQ(uncapped.admissible_volume_ratio(116.), 116.);
+}

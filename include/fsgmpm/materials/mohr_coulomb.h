@@ -6,7 +6,9 @@
 #include <fsgmpm/materials/isotropic_elasticity.h>
 #include <fsgmpm/materials/material.h>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <memory>
 
 namespace fsgmpm
@@ -58,7 +60,9 @@ namespace fsgmpm
                 const double friction_angle_degrees,
                 const double dilatancy_angle_degrees,
                 const double cohesion,
-                const double density);
+                const double density,
+                const double max_volume_ratio
+                = std::numeric_limits<double>::infinity());
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -81,6 +85,17 @@ namespace fsgmpm
 
     double
     wave_speed(const double density) const override;
+
+    /// A point that has come apart at the apex (cohesionless soil in
+    /// tension) does not grow without bound: its volume ratio is capped at
+    /// max_volume_ratio. Uncapped, points at a flow front reached J = 100
+    /// and, pushed back into contact, carried stress over a hundredfold
+    /// volume (hundredfold nodal forces on light nodes): the run blew up.
+    double
+    admissible_volume_ratio(const double J) const override
+    {
+      return std::min(J, max_volume_ratio);
+    }
 
     double
     strain_energy_density(const SymmetricTensor<2, 3> &stress) const override;
@@ -114,6 +129,7 @@ namespace fsgmpm
     const IsotropicElasticity elasticity;
     const MohrCoulombSurface  yield, potential;
     const double              apex; ///< c cot(phi) (infinite for phi = 0)
+    const double              max_volume_ratio;
 
   private:
     /// Elastic matrix in principal space times a vector.
