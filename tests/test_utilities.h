@@ -5,7 +5,10 @@
 
 #include <fsgmpm/scene/parameters.h>
 
+#include <fstream>
 #include <memory>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace fsgmpm
@@ -21,6 +24,20 @@ namespace fsgmpm
       Parameters<2>::declare_parameters(*prm);
       prm->parse_input_from_string(prm_text);
       return prm;
+    }
+
+    /// make_parameters() of a scene file shipped in prm/ (path relative to
+    /// the repository's prm directory), for tests that run a shipped scene.
+    inline std::unique_ptr<dealii::ParameterHandler>
+    make_parameters_from_scene(const std::string &prm_file)
+    {
+      std::ifstream in(std::string(FSGMPM_TEST_SOURCE_DIR) + "/../prm/"
+                       + prm_file);
+      if (!in)
+        throw std::runtime_error("cannot read prm/" + prm_file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      return make_parameters(text.str());
     }
   } // namespace test_tools
 } // namespace fsgmpm

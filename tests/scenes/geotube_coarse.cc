@@ -26,9 +26,7 @@
 #include "test_utilities.h"
 
 #include <cstdio>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 using namespace fsgmpm;
 
@@ -37,11 +35,7 @@ namespace
   std::unique_ptr<ParameterHandler>
   coarse_parameters(const double end_time)
   {
-    std::ifstream      in(std::string(FSGMPM_TEST_SOURCE_DIR)
-                     + "/../prm/geotube_A5.56.prm");
-    std::ostringstream text;
-    text << in.rdbuf();
-    auto prm = test_tools::make_parameters(text.str());
+    auto prm = test_tools::make_parameters_from_scene("geotube_A5.56.prm");
     prm->enter_subsection("Simulation");
     prm->set("End time", end_time);
     prm->leave_subsection();
@@ -71,6 +65,22 @@ namespace
     for (unsigned int i = 0; i < names.size(); ++i)
       m[names[i]] = values[i];
     return m;
+  }
+
+  // Top and bottom pressure of the line fit against the analytic ones,
+  // within @p tolerance times the analytic bottom pressure.
+  template <typename Reference>
+  void
+  expect_pressures(const std::map<std::string, double> &m,
+                   const Reference                     &ref,
+                   const double                         tolerance)
+  {
+    EXPECT_NEAR(m.at("top_pressure"),
+                ref.top_pressure,
+                tolerance * ref.bottom_pressure);
+    EXPECT_NEAR(m.at("bottom_pressure"),
+                ref.bottom_pressure,
+                tolerance * ref.bottom_pressure);
   }
 } // namespace
 
@@ -141,12 +151,7 @@ TEST(GeotubeCoarse, ShapeAndTensionMatchAnalytic)
   EXPECT_LE(m.at("particles_outside"), 0.005 * sim.get_particles().size());
   // The linear fit of the pressure (16 points per cell; with 4 the bottom
   // pressure came out 11% high).
-  EXPECT_NEAR(m.at("top_pressure"),
-              ref.top_pressure,
-              0.05 * ref.bottom_pressure);
-  EXPECT_NEAR(m.at("bottom_pressure"),
-              ref.bottom_pressure,
-              0.05 * ref.bottom_pressure);
+  expect_pressures(m, ref, 0.05);
 }
 
 TEST(GeotubeCoarseValidation, ConvergesByEq30)
@@ -172,10 +177,5 @@ TEST(GeotubeCoarseValidation, ConvergesByEq30)
               ref.top_pressure,
               m.at("bottom_pressure"),
               ref.bottom_pressure);
-  EXPECT_NEAR(m.at("top_pressure"),
-              ref.top_pressure,
-              0.1 * ref.bottom_pressure);
-  EXPECT_NEAR(m.at("bottom_pressure"),
-              ref.bottom_pressure,
-              0.1 * ref.bottom_pressure);
+  expect_pressures(m, ref, 0.1);
 }

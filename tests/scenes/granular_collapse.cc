@@ -19,8 +19,6 @@
 #include "test_utilities.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 using namespace fsgmpm;
 
@@ -29,11 +27,8 @@ namespace
   std::unique_ptr<ParameterHandler>
   collapse_parameters(const double a)
   {
-    std::ifstream      in(std::string(FSGMPM_TEST_SOURCE_DIR)
-                     + "/../prm/granular_column_collapse.prm");
-    std::ostringstream text;
-    text << in.rdbuf();
-    auto prm = test_tools::make_parameters(text.str());
+    auto prm
+      = test_tools::make_parameters_from_scene("granular_column_collapse.prm");
     prm->enter_subsection("Grid");
     prm->set("Upper corner", "2.4, 0.9");
     prm->set("Subdivisions", "240, 90");
