@@ -26,6 +26,7 @@ namespace fsgmpm
       return prm;
     }
 
+#ifdef FSGMPM_TEST_SOURCE_DIR
     /// make_parameters() of a scene file shipped in prm/ (path relative to
     /// the repository's prm directory), for tests that run a shipped scene.
     inline std::unique_ptr<dealii::ParameterHandler>
@@ -39,6 +40,7 @@ namespace fsgmpm
       text << in.rdbuf();
       return make_parameters(text.str());
     }
+#endif
   } // namespace test_tools
 } // namespace fsgmpm
 
