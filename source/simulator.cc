@@ -289,6 +289,8 @@ namespace fsgmpm
         material_options.push_back(body.options);
         materials.push_back(std::move(body.material));
       }
+    if (params.use_apic)
+      particles.enable_affine_velocity();
     particles.sort_by_cell(grid->n_cells());
   }
 
@@ -520,6 +522,7 @@ namespace fsgmpm
       });
     timed(nmd_stage, [&] {
       Stages::velocity_gradients(*grid, nodes, smoothing, particles);
+      Stages::store_affine_velocity(smoothing, particles);
       Stages::nmd(*grid, nodes, material_options, smoothing, particles);
     });
     timed(stress_update_stage, [&] {

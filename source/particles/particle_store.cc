@@ -25,6 +25,18 @@ namespace fsgmpm
     material_id.push_back(material);
     body_id.push_back(body);
     free_surface.push_back(0);
+    if (with_affine_velocity)
+      affine_velocity.emplace_back();
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::enable_affine_velocity()
+  {
+    with_affine_velocity = true;
+    affine_velocity.resize(size());
   }
 
 
@@ -81,6 +93,8 @@ namespace fsgmpm
     permute(material_id, order_scratch);
     permute(body_id, order_scratch);
     permute(free_surface, order_scratch);
+    if (with_affine_velocity)
+      permute(affine_velocity, order_scratch);
   }
 
 
@@ -111,6 +125,8 @@ namespace fsgmpm
     shrink(material_id);
     shrink(body_id);
     shrink(free_surface);
+    if (with_affine_velocity)
+      shrink(affine_velocity);
   }
 
 
@@ -124,6 +140,7 @@ namespace fsgmpm
     const double bytes
       = position.capacity() * sizeof(Point<dim>)
         + velocity.capacity() * sizeof(Tensor<1, dim>)
+        + affine_velocity.capacity() * sizeof(Tensor<2, dim>)
         + stress.capacity() * sizeof(SymmetricTensor<2, 3>)
         + (mass.capacity() + volume.capacity() + reference_volume.capacity())
             * sizeof(double)

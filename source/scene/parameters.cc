@@ -85,6 +85,15 @@ namespace fsgmpm
                         "MUSL: stress and positions from the remapped nodal "
                         "velocities of Eq. (20) (paper); USL: from the "
                         "grid-updated velocities.");
+      prm.declare_entry(
+        "Velocity transfer",
+        "FLIP",
+        Patterns::Selection("FLIP|APIC"),
+        "How the grid velocity goes back to the points. FLIP (paper Eq. 19): "
+        "v_p += dt a(x_p); keeps sub-cell velocity noise on the points that "
+        "the grid does not see. APIC (Jiang et al. 2015): v_p = v(x_p) plus "
+        "the cell's velocity gradient, mapped back affinely; drops the "
+        "sub-cell noise, keeps resolved (affine) motion.");
       prm.declare_entry("Gravity",
                         "0, -9.81",
                         Patterns::List(Patterns::Double()),
@@ -274,6 +283,7 @@ namespace fsgmpm
     courant   = prm.get_double("Courant number");
     fixed_dt  = prm.get_double("Fixed time step");
     use_musl  = (prm.get("Update scheme") == "MUSL");
+    use_apic  = (prm.get("Velocity transfer") == "APIC");
     gravity   = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     gravity_ramp_time   = prm.get_double("Gravity ramp time");
     stop_when_converged = (prm.get("Termination") == "dr_converged");

@@ -12,6 +12,32 @@ namespace fsgmpm
         const double               dt,
         ParticleStore<dim>        &particles)
     {
+      if (particles.has_affine_velocity())
+        {
+          // APIC (Jiang et al. 2015): the point takes the grid's velocity,
+          // v_p = v(x_p); sub-cell velocity noise that FLIP keeps on the
+          // points is dropped. Its affine part C_p is set after the remap
+          // (store_affine_velocity).
+          CellLoops::for_each_occupied_cell(
+            particles, [&](const unsigned int c) {
+              Tensor<1, dim> v[dim + 1];
+              for (unsigned int k = 0; k < dim + 1; ++k)
+                v[k] = nodes.velocity[grid.cell_nodes[c][k]];
+              for (unsigned int p = particles.cell_start[c];
+                   p < particles.cell_start[c + 1];
+                   ++p)
+                {
+                  const auto lambda
+                    = grid.barycentric(c, particles.position[p]);
+                  Tensor<1, dim> vp;
+                  for (unsigned int k = 0; k < dim + 1; ++k)
+                    vp += lambda[k] * v[k];
+                  particles.velocity[p] = vp;
+                }
+            });
+          return;
+        }
+
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         Tensor<1, dim> a[dim + 1];
         for (unsigned int k = 0; k < dim + 1; ++k)
@@ -28,6 +54,26 @@ namespace fsgmpm
           }
       });
     }
+
+    template <int dim>
+    void
+    store_affine_velocity(const SmoothingFields<dim> &smoothing,
+                          ParticleStore<dim>         &particles)
+    {
+      if (!particles.has_affine_velocity())
+        return;
+      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
+        for (unsigned int p = particles.cell_start[c];
+             p < particles.cell_start[c + 1];
+             ++p)
+          particles.affine_velocity[p] = smoothing.velocity_gradient[c];
+      });
+    }
+
+    template void
+    store_affine_velocity<2>(const SmoothingFields<2> &, ParticleStore<2> &);
+    template void
+    store_affine_velocity<3>(const SmoothingFields<3> &, ParticleStore<3> &);
 
     template void
     g2p<2>(const BackgroundGrid<2> &,

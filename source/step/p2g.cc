@@ -1,3 +1,4 @@
+#include <fsgmpm/step/affine_transfer.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
@@ -15,6 +16,7 @@ namespace fsgmpm
       for (const unsigned int c : particles.occupied_cells)
         nodes.activate(grid.cell_nodes[c]);
 
+      const bool apic = particles.has_affine_velocity();
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         double         m[dim + 1] = {};
         Tensor<1, dim> mv[dim + 1];
@@ -31,6 +33,8 @@ namespace fsgmpm
                 m[k] += lambda[k] * mp;
                 mv[k] += (lambda[k] * mp) * particles.velocity[p];
               }
+            if (apic)
+              add_affine_momentum(grid, c, lambda, mp, particles, p, mv);
             const double V = particles.volume[p];
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)

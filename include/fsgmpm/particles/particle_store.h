@@ -53,6 +53,20 @@ namespace fsgmpm
     void
     remove_flagged(const std::vector<std::uint8_t> &flag);
 
+    /**
+     * Switch on the affine velocity C_p of APIC (Jiang et al. 2015): from
+     * now on every point carries it (zero for the points already stored).
+     */
+    void
+    enable_affine_velocity();
+
+    /// Whether the points carry an affine velocity (APIC transfers).
+    bool
+    has_affine_velocity() const
+    {
+      return with_affine_velocity;
+    }
+
     /// Memory held per point in bytes (all arrays, including scratch).
     double
     bytes_per_particle() const;
@@ -61,8 +75,11 @@ namespace fsgmpm
     std::vector<unsigned int> cell_start;
     std::vector<unsigned int> occupied_cells;
 
-    std::vector<Point<dim>>            position;
-    std::vector<Tensor<1, dim>>        velocity;
+    std::vector<Point<dim>>     position;
+    std::vector<Tensor<1, dim>> velocity;
+    /// APIC only (empty otherwise): the affine part C_p of the point's
+    /// velocity field, v(x) = v_p + C_p (x - x_p) within its cell.
+    std::vector<Tensor<2, dim>>        affine_velocity;
     std::vector<SymmetricTensor<2, 3>> stress;
     std::vector<double>                mass;
     std::vector<double>                volume;
@@ -80,6 +97,7 @@ namespace fsgmpm
     void
     permute(std::vector<T> &v, const std::vector<unsigned int> &order);
 
+    bool                      with_affine_velocity = false;
     std::vector<unsigned int> order_scratch;
     std::vector<char>         value_scratch;
   };

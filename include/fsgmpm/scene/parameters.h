@@ -38,6 +38,7 @@ namespace fsgmpm
     double         courant;
     double         fixed_dt;
     bool           use_musl;
+    bool           use_apic;
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
     bool           stop_when_converged;

@@ -33,7 +33,8 @@ namespace fsgmpm
   namespace Stages
   {
     /// Stage 1 (Eqs. 3, 4, 17): lumped mass, momentum, internal force; the
-    /// nodes of occupied cells become the active nodes.
+    /// nodes of occupied cells become the active nodes. With APIC the
+    /// momentum carries the affine part: m_p (v_p + C_p (x_i - x_p)).
     template <int dim>
     void
     p2g(const BackgroundGrid<dim> &grid,
@@ -60,7 +61,8 @@ namespace fsgmpm
                 const double                 dt,
                 NodalFields<dim>            &nodes);
 
-    /// Stage 3 (Eq. 19): v_p += dt sum_i N_i(x_p) a_i.
+    /// Stage 3 (Eq. 19): FLIP v_p += dt sum_i N_i(x_p) a_i; or, if the
+    /// points carry an affine velocity, APIC: v_p = sum_i N_i(x_p) v_i.
     template <int dim>
     void
     g2p(const BackgroundGrid<dim> &grid,
@@ -87,6 +89,17 @@ namespace fsgmpm
                        const NodalFields<dim>    &nodes,
                        SmoothingFields<dim>      &smoothing,
                        const ParticleStore<dim>  &particles);
+
+    /// Stage 5a' (APIC only): the affine velocity C_p of every point is the
+    /// velocity gradient of its cell, which on a linear simplex equals
+    /// APIC's B_p D_p^-1 exactly. It is taken from the remapped velocities
+    /// (MUSL), not from the grid update, whose nearly empty nodes can carry
+    /// large velocities that a gradient, unlike an interpolation, would
+    /// pass on with full weight.
+    template <int dim>
+    void
+    store_affine_velocity(const SmoothingFields<dim> &smoothing,
+                          ParticleStore<dim>         &particles);
 
     /// Stage 5b, NMD (Eq. 24): nodal volumetric strain rates, averaged over
     /// the attached non-empty cells with the volumes of each material's

@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""Deposit profiles of granular-column-collapse runs.
+
+Usage: plot_deposit.py OUT.png RUN_DIR[:LABEL] [RUN_DIR[:LABEL] ...]
+       [--L0 0.2] [--bin 0.01]
+
+For each run, reads the last particles_*.vtu of RUN_DIR and draws the
+deposit surface (the highest point top, y + half a point spacing, in bins
+of width --bin along x), with the initial column (from particles_00000.vtu)
+dashed. Prints the run-out (monitor runout, last row of monitors.csv) and
+(L - L0)/L0. Uses Debian's /usr/bin/python3 with python3-matplotlib and
+python3-numpy.
+"""
+import argparse
+import csv
+import glob
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from read_vtu import read_vtu  # noqa: E402
+
+
+def surface(path, bin_width):
+    fields = read_vtu(path)
+    x, y = fields["Points"][:, 0], fields["Points"][:, 1]
+    top = y + 0.5 * np.sqrt(fields["volume"])
+    edges = np.arange(0, x.max() + 2 * bin_width, bin_width)
+    index = np.digitize(x, edges) - 1
+    heights = np.zeros(len(edges) - 1)
+    np.maximum.at(heights, index, top)
+    return edges, heights
+
+
+def last_runout(run_dir):
+    with open(os.path.join(run_dir, "monitors.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return float(rows[-1]["runout"]) if rows and "runout" in rows[-1] \
+        else float("nan")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("output")
+    parser.add_argument("runs", nargs="+")
+    parser.add_argument("--L0", type=float, default=0.2)
+    parser.add_argument("--bin", type=float, default=0.01)
+    args = parser.parse_args()
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(9, 3.5))
+    for run in args.runs:
+        run_dir, _, label = run.partition(":")
+        label = label or os.path.basename(run_dir.rstrip("/"))
+        files = sorted(glob.glob(os.path.join(run_dir, "particles_*.vtu")))
+        if not files:
+            sys.exit("plot_deposit.py: no particles_*.vtu in " + run_dir)
+        edges, heights = surface(files[-1], args.bin)
+        runout = last_runout(run_dir)
+        print("%s: run-out %.4f m, (L - L0)/L0 = %.3f"
+              % (label, runout, (runout - args.L0) / args.L0))
+        line, = ax.step(edges[:-1], heights, where="post",
+                        label="%s ((L-L0)/L0 = %.2f)"
+                        % (label, (runout - args.L0) / args.L0))
+        edges0, heights0 = surface(files[0], args.bin)
+        ax.step(edges0[:-1], heights0, where="post", ls="--", lw=0.8,
+                color=line.get_color())
+    ax.set_xlabel("x from the back wall (m)")
+    ax.set_ylabel("deposit surface (m)")
+    ax.set_aspect("equal")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=120)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,56 @@
+"""Read the point data of an fsgmpm/deal.II VTU file (zlib-compressed,
+base64-encoded binary arrays) into numpy arrays, without VTK.
+
+    from read_vtu import read_vtu
+    fields = read_vtu("output/run/particles_00010.vtu")
+    x, y = fields["Points"][:, 0], fields["Points"][:, 1]
+
+Uses Debian's /usr/bin/python3 with python3-numpy.
+"""
+import base64
+import re
+import struct
+import zlib
+
+import numpy as np
+
+_TYPES = {"Float32": np.float32, "Float64": np.float64, "Int32": np.int32,
+          "UInt32": np.uint32, "Int64": np.int64, "UInt8": np.uint8}
+
+
+def _decode(text, dtype):
+    # Header: number of blocks, block size, last block size, then the
+    # compressed size of every block (uint32), base64-encoded on its own.
+    first = base64.b64decode(text[:8])
+    n_blocks = struct.unpack("<I", first[:4])[0]
+    header_len = 4 * (3 + n_blocks)
+    header_chars = ((header_len + 2) // 3) * 4
+    header = base64.b64decode(text[:header_chars])
+    sizes = struct.unpack("<%dI" % n_blocks, header[12:12 + 4 * n_blocks])
+    body = base64.b64decode(text[header_chars:])
+    raw, offset = b"", 0
+    for size in sizes:
+        raw += zlib.decompress(body[offset:offset + size])
+        offset += size
+    return np.frombuffer(raw, dtype=dtype)
+
+
+def read_vtu(path):
+    """Map of array name ("Points" for the coordinates) to numpy array."""
+    with open(path) as f:
+        text = f.read()
+    fields = {}
+    for match in re.finditer(r"<DataArray([^>]*)>\s*([^<]*)</DataArray>",
+                             text):
+        attributes, data = match.group(1), match.group(2).strip()
+        if 'format="binary"' not in attributes:
+            raise ValueError(path + ": only binary VTU arrays are supported")
+        name = re.search(r'Name="([^"]*)"', attributes)
+        name = name.group(1) if name else "Points"
+        components = re.search(r'NumberOfComponents="(\d+)"', attributes)
+        components = int(components.group(1)) if components else 1
+        dtype = _TYPES[re.search(r'type="([^"]*)"', attributes).group(1)]
+        values = _decode(data, dtype)
+        fields[name] = values.reshape(-1, components) if components > 1 \
+            else values
+    return fields
