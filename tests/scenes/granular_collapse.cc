@@ -10,7 +10,8 @@
 // unstable); the normalised run-out (L_inf - L0)/L0 is within 25% of the
 // quasi-2D scaling of Lube et al. (2005), 1.2 a (a < 1.8) and
 // 1.9 a^(2/3) (a > 2.8). Measured: 1.44 (+20%) and 4.26 (+8%); with FLIP
-// transfers 2.06 and 6.17 (doc/soil_validation.md).
+// transfers 2.06 and 6.17. At a = 3 the run-out still grows with
+// refinement (4.64 at 40 cells, doc/soil_validation.md).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
