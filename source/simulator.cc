@@ -171,6 +171,8 @@ namespace fsgmpm
     energy_history.clear();
     energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                                monitors.external_work}});
+    initial_energy      = monitors.kinetic_energy + monitors.strain_energy;
+    external_work_scale = std::abs(monitors.external_work);
   }
 
 
@@ -402,6 +404,31 @@ namespace fsgmpm
       return fail("a material point moved " + std::to_string(displacement_ratio)
                   + " times its cell's smallest altitude in one step (it "
                     "crossed more than one cell)");
+
+    // Energy balance: kinetic + strain energy can only come from the
+    // initial energy and the external work, less what damping removed
+    // (plastic, viscous and transfer dissipation only lower the left side).
+    // More means the step created energy: slow instabilities that the
+    // growth window misses (e.g. a no-slip geotube, growing for 15 s).
+    external_work_scale
+      = std::max(external_work_scale, std::abs(monitors.external_work));
+    const double stored  = monitors.kinetic_energy + monitors.strain_energy;
+    const double created = stored
+                           - (initial_energy + monitors.external_work
+                              - monitors.dissipated_energy);
+    const double scale = initial_energy + external_work_scale;
+    if (params.energy_creation_tolerance > 0 && scale > 0
+        && created > params.energy_creation_tolerance * scale)
+      return fail("the kinetic plus strain energy (" + std::to_string(stored)
+                  + " J) exceeds the initial energy plus the external work "
+                    "minus the damping work by "
+                  + std::to_string(created) + " J, more than "
+                  + std::to_string(params.energy_creation_tolerance)
+                  + " times the energy put in (" + std::to_string(scale)
+                  + " J): the step is creating energy (seen with a stiff body "
+                    "bouncing off a 'friction' wall; "
+                    "Stability/Energy creation tolerance = 0 disables this "
+                    "check)");
 
     energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                                monitors.external_work}});

@@ -232,6 +232,9 @@ namespace fsgmpm
     unsigned int converged_steps = 0;
     std::string  termination     = "end_time";
     std::string  diagnosis;
+    /// Kinetic plus strain energy at the start and the largest |external
+    /// work| so far (energy-creation guard).
+    double initial_energy = 0, external_work_scale = 0;
     /// (kinetic+strain energy, external work) of the last window of steps.
     std::deque<std::array<double, 2>> energy_history;
 

@@ -178,6 +178,15 @@ namespace fsgmpm
                         Patterns::Integer(1),
                         "Steps over which the kinetic energy growth is "
                         "measured.");
+      prm.declare_entry(
+        "Energy creation tolerance",
+        "0.5",
+        Patterns::Double(0),
+        "Stop as unstable if the kinetic plus strain energy exceeds the "
+        "initial energy plus the external work minus the damping work "
+        "(energy the step created) by more than this fraction of the "
+        "initial energy plus the largest external work so far; catches slow "
+        "growth that the growth window does not. 0 switches it off.");
     }
     prm.leave_subsection();
 
@@ -312,8 +321,9 @@ namespace fsgmpm
                            + std::to_string(local_damping) + "."));
 
     prm.enter_subsection("Stability");
-    ke_growth_factor = prm.get_double("Kinetic energy growth factor");
-    ke_growth_window = prm.get_integer("Growth window");
+    ke_growth_factor          = prm.get_double("Kinetic energy growth factor");
+    ke_growth_window          = prm.get_integer("Growth window");
+    energy_creation_tolerance = prm.get_double("Energy creation tolerance");
     prm.leave_subsection();
 
     prm.enter_subsection("Grid");

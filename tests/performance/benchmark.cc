@@ -338,9 +338,10 @@ main(int argc, char **argv)
       // The same with APIC transfers (the cost of the affine velocity).
       run_case<2>("dam_break_2d_apic",
                   steps,
-                  dam_break_scene() + "subsection Simulation\n"
-                                      "  set Velocity transfer = APIC\n"
-                                      "end\n");
+                  dam_break_scene()
+                    + "subsection Simulation\n"
+                      "  set Velocity transfer = APIC\n"
+                      "end\n");
       run_case<3>("elastic_block_3d", std::max(2u, steps / 2));
       run_case<3>("dam_break_3d",
                   std::max(2u, steps / 2),

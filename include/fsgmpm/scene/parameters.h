@@ -57,6 +57,7 @@ namespace fsgmpm
     // Stability guard
     double       ke_growth_factor;
     unsigned int ke_growth_window;
+    double       energy_creation_tolerance;
 
     // Grid
     std::string                                 grid_type;
