@@ -20,7 +20,8 @@ namespace fsgmpm
    * Eqs. 17-21). A stage knows nothing about the scene; the Simulator calls
    *
    *   MUSL (default):  p2g -> grid_update -> g2p -> remap
-   *                    -> velocity_gradients -> nmd -> stress_update
+   *                    -> velocity_gradients (-> store_affine_velocity,
+   *                    APIC only) -> nmd -> stress_update
    *                    -> detect_free_surface
    *                    -> average_nodal_pressure -> update_positions
    *                    -> relocate
