@@ -12,48 +12,33 @@ namespace fsgmpm
         const double               dt,
         ParticleStore<dim>        &particles)
     {
-      if (particles.has_affine_velocity())
-        {
-          // APIC (Jiang et al. 2015): the point takes the grid's velocity,
-          // v_p = v(x_p); sub-cell velocity noise that FLIP keeps on the
-          // points is dropped. Its affine part C_p is set after the remap
-          // (store_affine_velocity).
-          CellLoops::for_each_occupied_cell(
-            particles, [&](const unsigned int c) {
-              Tensor<1, dim> v[dim + 1];
-              for (unsigned int k = 0; k < dim + 1; ++k)
-                v[k] = nodes.velocity[grid.cell_nodes[c][k]];
-              for (unsigned int p = particles.cell_start[c];
-                   p < particles.cell_start[c + 1];
-                   ++p)
-                {
-                  const auto lambda
-                    = grid.barycentric(c, particles.position[p]);
-                  Tensor<1, dim> vp;
-                  for (unsigned int k = 0; k < dim + 1; ++k)
-                    vp += lambda[k] * v[k];
-                  particles.velocity[p] = vp;
-                }
-            });
-          return;
-        }
-
+      // FLIP (Eq. 19): v_p += dt a(x_p). APIC (Jiang et al. 2015): the point
+      // takes the grid's velocity, v_p = v(x_p), so the sub-cell velocity
+      // noise that FLIP keeps on the points is dropped; its affine part C_p
+      // is set after the remap (store_affine_velocity).
+      const bool  apic  = particles.has_affine_velocity();
+      const auto &field = apic ? nodes.velocity : nodes.acceleration;
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        Tensor<1, dim> a[dim + 1];
+        Tensor<1, dim> f[dim + 1];
         for (unsigned int k = 0; k < dim + 1; ++k)
-          a[k] = nodes.acceleration[grid.cell_nodes[c][k]];
+          f[k] = field[grid.cell_nodes[c][k]];
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
           {
             const auto     lambda = grid.barycentric(c, particles.position[p]);
-            Tensor<1, dim> dv;
+            Tensor<1, dim> value;
             for (unsigned int k = 0; k < dim + 1; ++k)
-              dv += lambda[k] * a[k];
-            particles.velocity[p] += dt * dv;
+              value += lambda[k] * f[k];
+            if (apic)
+              particles.velocity[p] = value;
+            else
+              particles.velocity[p] += dt * value;
           }
       });
     }
+
+
 
     template <int dim>
     void

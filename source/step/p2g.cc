@@ -1,4 +1,3 @@
-#include <fsgmpm/step/affine_transfer.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
@@ -33,8 +32,16 @@ namespace fsgmpm
                 m[k] += lambda[k] * mp;
                 mv[k] += (lambda[k] * mp) * particles.velocity[p];
               }
+            // APIC's affine part (Jiang et al. 2015, Eq. 11 with D_p^-1
+            // folded into C_p): an affine velocity field over the cell
+            // maps to the nodes exactly, so resolved motion is not
+            // smoothed as in PIC.
             if (apic)
-              add_affine_momentum(grid, c, lambda, mp, particles, p, mv);
+              for (unsigned int k = 0; k < dim + 1; ++k)
+                mv[k] += (lambda[k] * mp)
+                         * (particles.affine_velocity[p]
+                            * (grid.node_positions[grid.cell_nodes[c][k]]
+                               - particles.position[p]));
             const double V = particles.volume[p];
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
