@@ -213,6 +213,11 @@ namespace fsgmpm
     description.make_mesh(h, membrane_z_range, mesh);
     membrane = std::make_unique<Membrane<dim>>(mesh, description.properties);
     membrane->tangential_slip = description.tangential_slip;
+    AssertThrow(!membrane->tangential_slip || dim == 2
+                  || !membrane->rings.empty(),
+                ExcMessage("Membrane/Tangential coupling = slip: the 3D "
+                           "membrane is not an extrusion along z (no closed "
+                           "ring of nodes at each z level)."));
     if (std::isfinite(description.ground_level))
       {
         membrane->ground_level     = description.ground_level;

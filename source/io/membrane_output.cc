@@ -162,10 +162,32 @@ namespace fsgmpm
         p_bottom           = pm + slope * (y0 - ym);
       }
 
-    // Points outside the closed membrane (2D, even-odd rule): fluid that
-    // leaked between membrane nodes.
+    // Extruded 3D membrane: length and area per ring (their mean) and the
+    // fluid volume per unit thickness, comparable with the 2D scene.
+    double length = membrane.total_size(), area = membrane.enclosed_area();
+    if (dim == 3 && !membrane.rings.empty())
+      {
+        double z0 = big, z1 = -big;
+        for (const auto &p : membrane.position)
+          {
+            z0 = std::min(z0, p[dim - 1]);
+            z1 = std::max(z1, p[dim - 1]);
+          }
+        length = area = 0;
+        for (const auto &ring : membrane.rings)
+          {
+            length += membrane.loop_length(ring) / membrane.rings.size();
+            area += membrane.loop_area(ring) / membrane.rings.size();
+          }
+        if (z1 > z0)
+          volume /= z1 - z0;
+      }
+
+    // Points outside the closed membrane (even-odd rule in x-y; 3D: the
+    // first ring of an extruded membrane): fluid that leaked between
+    // membrane nodes.
     double outside = 0;
-    if (dim == 2)
+    if (dim == 2 || !membrane.rings.empty())
       {
         std::vector<Point<2>> poly;
         for (const auto &x : membrane.ordered_nodes())
@@ -182,8 +204,8 @@ namespace fsgmpm
             {"mean_tension", l > 0 ? tl / l : 0.},
             {"top_pressure", p_top},
             {"bottom_pressure", p_bottom},
-            {"membrane_length", membrane.total_size()},
-            {"enclosed_area", membrane.enclosed_area()},
+            {"membrane_length", length},
+            {"enclosed_area", area},
             {"fluid_volume", volume}};
   }
 

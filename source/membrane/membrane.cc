@@ -2,7 +2,9 @@
 
 #include <fsgmpm/membrane/membrane.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace fsgmpm
@@ -81,6 +83,7 @@ namespace fsgmpm
         for (const unsigned int a : el)
           mass[a] += props.areal_mass * rest_size[e] / dim;
       }
+    find_rings();
     compute_forces();
   }
 
@@ -193,20 +196,67 @@ namespace fsgmpm
   double
   Membrane<dim>::equalize_stretch()
   {
-    if (dim != 2 || !is_closed_loop())
-      return 0;
-    const unsigned int n = elements.size();
-    // Loop order: element e goes from node(e) to node(e+1).
-    std::vector<unsigned int> node(n);
-    for (unsigned int e = 0; e < n; ++e)
-      node[e] = elements[e][0];
+    if constexpr (dim == 2)
+      {
+        if (!is_closed_loop())
+          return 0;
+        // Loop order: element e goes from node(e) to node(e+1).
+        std::vector<unsigned int> node(elements.size());
+        for (unsigned int e = 0; e < elements.size(); ++e)
+          node[e] = elements[e][0];
+        return equalize_loop(node, rest_size);
+      }
+    else
+      {
+        // Extruded membrane in a slab with roller faces (plane strain):
+        // the nodes stacked along z share their x-y position (the grid's
+        // tetrahedra move the front and back faces slightly differently,
+        // which the membrane's shear stiffness would turn into large
+        // forces), and the rings are equalized as the 2D loop.
+        if (rings.empty())
+          return 0;
+        const std::vector<Point<dim>> old_position = position;
+        const unsigned int            n            = rings[0].size();
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            double x = 0, y = 0;
+            for (const auto &ring : rings)
+              {
+                x += position[ring[k]][0] / rings.size();
+                y += position[ring[k]][1] / rings.size();
+              }
+            position[rings[0][k]][0] = x;
+            position[rings[0][k]][1] = y;
+          }
+        equalize_loop(rings[0], ring_rest_length[0]);
+        double max_move = 0;
+        for (const auto &ring : rings)
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              position[ring[k]][0] = position[rings[0][k]][0];
+              position[ring[k]][1] = position[rings[0][k]][1];
+              max_move
+                = std::max(max_move,
+                           position[ring[k]].distance(old_position[ring[k]]));
+            }
+        return max_move;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::equalize_loop(const std::vector<unsigned int> &node,
+                               const std::vector<double>       &rest_length)
+  {
+    const unsigned int  n = node.size();
     std::vector<double> s(n + 1, 0.), S(n + 1, 0.);
     for (unsigned int e = 0; e < n; ++e)
       {
         s[e + 1]
-          = s[e]
-            + position[elements[e][0]].distance(position[elements[e][dim - 1]]);
-        S[e + 1] = S[e] + rest_size[e];
+          = s[e] + position[node[e]].distance(position[node[(e + 1) % n]]);
+        S[e + 1] = S[e] + rest_length[e];
       }
     const double length = s[n], rest = S[n];
     // Target arc length of node k: proportional to the rest length before
@@ -233,13 +283,13 @@ namespace fsgmpm
       Point<dim> o;
       o[0] = a[0] + (ac[1] * ab.norm_square() - ab[1] * ac.norm_square()) / d;
       o[1] = a[1] + (ab[0] * ac.norm_square() - ac[0] * ab.norm_square()) / d;
-      const double r  = o.distance(from);
+      const double r  = std::hypot(from[0] - o[0], from[1] - o[1]);
       const double t1 = std::atan2(from[1] - o[1], from[0] - o[0]);
       double       dt = std::atan2(to[1] - o[1], to[0] - o[0]) - t1;
       dt              = std::remainder(dt, 2 * M_PI); // the short arc
-      Point<dim> x;
-      x[0] = o[0] + r * std::cos(t1 + t * dt);
-      x[1] = o[1] + r * std::sin(t1 + t * dt);
+      Point<dim> x    = from;                         // z (3D rings) is kept
+      x[0]            = o[0] + r * std::cos(t1 + t * dt);
+      x[1]            = o[1] + r * std::sin(t1 + t * dt);
       return x;
     };
     auto curve = [&](const unsigned int e, const double t) {
@@ -311,6 +361,21 @@ namespace fsgmpm
   {
     std::vector<SymmetricTensor<2, dim>> k(n_nodes());
     const double                         EA = properties.axial_stiffness;
+    // With the frictionless slip, equalize_stretch() spreads every local
+    // stretch over the whole loop after each position update, so the grid
+    // feels the cables' axial stiffness only through the loop's length L:
+    // dT = EA dL / L with dL = sum_b theta_b n_b . dx_b (theta_b: turning
+    // angle at node b), a rank-one stiffness (EA/L) theta_a theta_b n_a n_b
+    // whose rows are bounded by (EA/L) |theta_a| sum_b |theta_b|. Bounding
+    // the mass scaling by EA/l instead would give the grid nodes next to
+    // the membrane ~100x the fluid's inertia along it and slow the
+    // relaxation of the shape (doc/membrane_validation.md).
+    const bool slip
+      = tangential_slip
+        && ((dim == 2 && is_closed_loop()) || (dim == 3 && !rings.empty()));
+    std::vector<double> loop_stiffness;
+    if (slip)
+      loop_stiffness = loop_axial_stiffness();
     for (unsigned int e = 0; e < elements.size(); ++e)
       for (unsigned int i = 0; i < dim; ++i)
         {
@@ -321,8 +386,17 @@ namespace fsgmpm
           const SymmetricTensor<2, dim> tt
             = symmetrize(outer_product(d / l, d / l));
           // An edge shared by two triangles counts twice: a safe bound.
+          // Slip in 3D keeps the axial stiffness along z, which the rings
+          // do not spread (the roller faces hold z anyway).
+          SymmetricTensor<2, dim> axial = tt;
+          if (slip)
+            {
+              axial = SymmetricTensor<2, dim>();
+              if (dim == 3)
+                axial[dim - 1][dim - 1] = tt[dim - 1][dim - 1];
+            }
           const SymmetricTensor<2, dim> k_edge
-            = (EA / l) * tt
+            = (EA / l) * axial
               + (std::max(tension[e], 0.) / l)
                   * (unit_symmetric_tensor<dim>() - tt);
           k[el[i]] += k_edge;
@@ -330,10 +404,76 @@ namespace fsgmpm
           if (dim == 2)
             break;
         }
+    if (slip)
+      for (unsigned int a = 0; a < n_nodes(); ++a)
+        k[a] += loop_stiffness[a] * unit_symmetric_tensor<dim>();
     if (std::isfinite(ground_level))
       for (auto &ka : k)
         ka[1][1] += ground_stiffness;
     return k;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Membrane<dim>::loop_axial_stiffness() const
+  {
+    // Per loop node k: (EA/L) max(|theta_k|, 2 pi l_k/L) sum_j |theta_j|,
+    // with l_k the mean length of the two edges at k; the floor keeps the
+    // bound of a circle (theta = 2 pi l/L) on straight pieces, where the
+    // one pass of equalize_stretch() leaves some local stiffness. 3D: the
+    // first ring's value times each node's share of the height.
+    std::vector<unsigned int> loop;
+    if constexpr (dim == 2)
+      for (const auto &el : elements)
+        loop.push_back(el[0]);
+    else
+      loop = rings[0];
+    const unsigned int          n = loop.size();
+    std::vector<double>         theta(n), l(n);
+    std::vector<Tensor<1, dim>> t(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        t[k] = position[loop[(k + 1) % n]] - position[loop[k]];
+        l[k] = t[k].norm();
+        t[k] /= l[k];
+      }
+    double sum = 0, length = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const unsigned int p = (k + n - 1) % n;
+        theta[k]             = std::acos(std::clamp(t[p] * t[k], -1., 1.));
+        sum += theta[k];
+        length += l[k];
+      }
+    const double        EA = properties.axial_stiffness;
+    std::vector<double> value(n);
+    for (unsigned int k = 0; k < n; ++k)
+      value[k]
+        = EA / length * sum
+          * std::max(theta[k], M_PI * (l[k] + l[(k + n - 1) % n]) / length);
+
+    std::vector<double> k_node(n_nodes(), 0.);
+    if constexpr (dim == 2)
+      for (unsigned int k = 0; k < n; ++k)
+        k_node[loop[k]] = value[k];
+    else
+      {
+        const unsigned int n_rings = rings.size();
+        const double       height  = std::abs(position[rings.back()[0]][dim - 1]
+                                       - position[rings[0][0]][dim - 1]);
+        for (unsigned int r = 0; r < n_rings; ++r)
+          {
+            const double share
+              = (n_rings > 1) ? height / (n_rings - 1)
+                                  * ((r == 0 || r + 1 == n_rings) ? 0.5 : 1.)
+                              : 1.;
+            for (unsigned int k = 0; k < n; ++k)
+              k_node[rings[r][k]] = share * value[k];
+          }
+      }
+    return k_node;
   }
 
 
@@ -374,8 +514,12 @@ namespace fsgmpm
   Membrane<dim>::ordered_nodes() const
   {
     std::vector<Point<dim>> p;
-    for (const auto &el : elements)
-      p.push_back(position[el[0]]);
+    if (dim == 3 && !rings.empty())
+      for (const unsigned int a : rings[0])
+        p.push_back(position[a]);
+    else
+      for (const auto &el : elements)
+        p.push_back(position[el[0]]);
     return p;
   }
 
@@ -406,6 +550,156 @@ namespace fsgmpm
         w += rest_size[e] * (s1 * s1 + s2 * s2 - 2 * nu * s1 * s2) / (2 * EA);
       }
     return w;
+  }
+
+
+
+  template <int dim>
+  void
+  Membrane<dim>::find_rings()
+  {
+    rings.clear();
+    ring_rest_length.clear();
+    if (dim != 3)
+      return;
+    // Nodes grouped by z; within a group, the element edges joining two of
+    // its nodes must form one closed loop per group.
+    std::vector<unsigned int> order(n_nodes());
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      order[a] = a;
+    std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+      return position[a][dim - 1] < position[b][dim - 1];
+    });
+    const double tol = 1e-9
+                       * (1. + std::abs(position[order.back()][dim - 1])
+                          + std::abs(position[order.front()][dim - 1]));
+    std::vector<unsigned int> level(n_nodes());
+    unsigned int              n_levels = 0;
+    for (unsigned int k = 0; k < order.size(); ++k)
+      {
+        if (k > 0
+            && position[order[k]][dim - 1]
+                 > position[order[k - 1]][dim - 1] + tol)
+          ++n_levels;
+        level[order[k]] = n_levels;
+      }
+    ++n_levels;
+
+    const unsigned int none = static_cast<unsigned int>(-1);
+    std::vector<std::array<unsigned int, 2>> neighbours(n_nodes(),
+                                                        {none, none});
+    auto link = [&](const unsigned int a, const unsigned int b) {
+      for (const unsigned int c : neighbours[a])
+        if (c == b)
+          return true;
+      for (unsigned int &c : neighbours[a])
+        if (c == none)
+          {
+            c = b;
+            return true;
+          }
+      return false; // a third neighbour in the ring: not an extrusion
+    };
+    for (const auto &el : elements)
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const unsigned int a = el[i], b = el[(i + 1) % dim];
+          if (level[a] == level[b] && !(link(a, b) && link(b, a)))
+            return;
+        }
+
+    std::vector<std::vector<unsigned int>> found(n_levels);
+    std::vector<unsigned int>              count(n_levels, 0);
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      ++count[level[a]];
+    std::vector<bool> used(n_nodes(), false);
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      {
+        if (used[a])
+          continue;
+        if (!found[level[a]].empty() || neighbours[a][1] == none)
+          return; // two loops at one level, or an open chain
+        auto &ring = found[level[a]];
+        for (unsigned int prev = none, b = a; !used[b];)
+          {
+            used[b] = true;
+            ring.push_back(b);
+            const unsigned int next = (neighbours[b][0] != prev)
+                                        ? neighbours[b][0]
+                                        : neighbours[b][1];
+            prev                    = b;
+            b                       = next;
+            if (b == none)
+              return;
+          }
+        if (ring.size() != count[level[a]])
+          return;
+      }
+    for (auto &ring : found)
+      {
+        if (loop_area(ring) < 0)
+          std::reverse(ring.begin(), ring.end());
+        // Start every ring at the node stacked above the first ring's first
+        // node, so that ring[k] are the same outline point at every level.
+        if (!rings.empty())
+          {
+            if (ring.size() != rings[0].size())
+              {
+                rings.clear();
+                ring_rest_length.clear();
+                return;
+              }
+            const Point<dim> &x0    = position[rings[0][0]];
+            unsigned int      first = 0;
+            double            best  = std::numeric_limits<double>::max();
+            for (unsigned int k = 0; k < ring.size(); ++k)
+              {
+                const double d = std::hypot(position[ring[k]][0] - x0[0],
+                                            position[ring[k]][1] - x0[1]);
+                if (d < best)
+                  {
+                    best  = d;
+                    first = k;
+                  }
+              }
+            std::rotate(ring.begin(), ring.begin() + first, ring.end());
+          }
+        std::vector<double> rest(ring.size());
+        for (unsigned int k = 0; k < ring.size(); ++k)
+          rest[k]
+            = position[ring[k]].distance(position[ring[(k + 1) % ring.size()]])
+              / (1. + properties.initial_strain);
+        rings.push_back(ring);
+        ring_rest_length.push_back(rest);
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::loop_length(const std::vector<unsigned int> &loop) const
+  {
+    double l = 0;
+    for (unsigned int k = 0; k < loop.size(); ++k)
+      l += position[loop[k]].distance(position[loop[(k + 1) % loop.size()]]);
+    return l;
+  }
+
+
+
+  template <int dim>
+  double
+  Membrane<dim>::loop_area(const std::vector<unsigned int> &loop) const
+  {
+    double a = 0;
+    for (unsigned int k = 0; k < loop.size(); ++k)
+      {
+        const auto &p = position[loop[k]];
+        const auto &q = position[loop[(k + 1) % loop.size()]];
+        a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+      }
+    return a;
   }
 
 

@@ -168,8 +168,10 @@ namespace fsgmpm
                         Patterns::Selection("no-slip|slip"),
                         "no-slip: the membrane nodes move with the grid "
                         "velocity (shared nodes, paper); slip (2D closed "
-                        "membranes): in addition the nodes are moved along "
-                        "the membrane each step so that the tension is "
+                        "membranes, and in 3D the extruded ellipse or "
+                        "polygon, ring by ring): in addition the nodes are "
+                        "moved along the membrane each step so that the "
+                        "tension is "
                         "uniform, i.e. frictionless contact with the fill "
                         "(a fluid at rest carries no shear).");
       prm.declare_entry("Ground level",
@@ -280,9 +282,11 @@ namespace fsgmpm
                 ExcMessage("Membrane/Axial stiffness must be positive."));
     AssertThrow(properties.areal_mass > 0,
                 ExcMessage("Membrane/Areal mass must be positive."));
-    AssertThrow(!tangential_slip || dim == 2,
-                ExcMessage("Membrane/Tangential coupling = slip is only "
-                           "available in 2D."));
+    AssertThrow(!tangential_slip || dim == 2 || shape != "gmsh",
+                ExcMessage("Membrane/Tangential coupling = slip needs a 2D "
+                           "membrane or, in 3D, an extruded one (Shape = "
+                           "ellipse or polygon); a Gmsh surface has no "
+                           "rings to slip along."));
     AssertThrow(shape != "gmsh" || dim == 3,
                 ExcMessage("Membrane/Shape = gmsh needs a 3D scene (a 2D "
                            "membrane is an ellipse or a polygon)."));

@@ -17,7 +17,9 @@
 //     scaling and the time-step bound use it) against its closed form: the
 //     two cables at +-theta = pi/n from the tangent give 2 (EA/l cos^2 +
 //     T/l sin^2) along the tangent and 2 (EA/l sin^2 + T/l cos^2) along the
-//     normal, to 1e-12; the ground penalty adds its stiffness along y.
+//     normal, to 1e-12; the ground penalty adds its stiffness along y;
+//     with slip the cables' axial part is replaced by the loop's bound;
+// (5) 3D slip on the rings of an extruded membrane (see below).
 
 #include <deal.II/grid/tria.h>
 
@@ -191,6 +193,29 @@ TEST(MembraneState, DirectionalNodalStiffness)
       EXPECT_NEAR(tangent * (k[a] * normal), 0., 1e-12 * k_t);
     }
 
+  // Frictionless slip: the axial part is the loop's, (EA/L) theta sum theta
+  // with theta = 2 pi/n and L = n l on a regular polygon, in every
+  // direction; the geometric part is unchanged.
+  m.tangential_slip = true;
+  const auto   ks   = m.nodal_stiffness();
+  const double loop = EA / (n * l) * 2 * M_PI * (2 * M_PI / n);
+  for (unsigned int a = 0; a < n; ++a)
+    {
+      const Tensor<1, 2> x      = m.position[a];
+      const Tensor<1, 2> normal = x / x.norm();
+      const Tensor<1, 2> tangent({-normal[1], normal[0]});
+      EXPECT_NEAR(tangent * (ks[a] * tangent),
+                  2 * T / l * s * s + loop,
+                  1e-9 * loop);
+      EXPECT_NEAR(normal * (ks[a] * normal),
+                  2 * T / l * c * c + loop,
+                  1e-9 * loop);
+      EXPECT_NEAR(tangent * (ks[a] * normal), 0., 1e-9 * loop);
+    }
+  // ~ EA/l / n^2 * 4 pi^2: far below the cables' own stiffness.
+  EXPECT_LT(loop, 0.1 * EA / l);
+  m.tangential_slip = false;
+
   m.ground_level     = -r;
   m.ground_stiffness = 1e7;
   const auto kg      = m.nodal_stiffness();
@@ -201,4 +226,105 @@ TEST(MembraneState, DirectionalNodalStiffness)
       EXPECT_NEAR(diff[0][0], 0., 1e-6);
       EXPECT_NEAR(diff[0][1], 0., 1e-6);
     }
+}
+
+
+// (5) 3D slip on an extruded membrane: the rings (one closed loop of nodes
+//     per z level) are found, and moving the nodes unevenly along them is
+//     undone ring by ring as in 2D: every ring edge ends with the same
+//     stretch, every node stays on the cylinder and in its z plane, so the
+//     triangles' tension becomes uniform. A closed surface that is not an
+//     extrusion has no rings.
+TEST(MembraneState, SlipOnExtrudedMembraneRings)
+{
+  const unsigned int    n = 64, nz = 2;
+  const double          r = 1., height = 0.1;
+  std::vector<Point<3>> vertices;
+  for (unsigned int k = 0; k <= nz; ++k)
+    for (unsigned int i = 0; i < n; ++i)
+      vertices.emplace_back(r * std::cos(2 * M_PI * i / n),
+                            r * std::sin(2 * M_PI * i / n),
+                            height * k / nz);
+  std::vector<CellData<2>> cells;
+  for (unsigned int k = 0; k < nz; ++k)
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const unsigned int a = k * n + i, b = k * n + (i + 1) % n, c = a + n,
+                           d = b + n;
+        CellData<2> t1(3), t2(3);
+        t1.vertices = {a, b, d};
+        t2.vertices = {a, d, c};
+        cells.push_back(t1);
+        cells.push_back(t2);
+      }
+  Triangulation<2, 3> mesh;
+  mesh.create_triangulation(vertices, cells, SubCellData());
+  MembraneProperties props;
+  props.axial_stiffness = 1e5;
+  Membrane<3> m(mesh, props);
+  ASSERT_EQ(m.rings.size(), nz + 1);
+  for (const auto &ring : m.rings)
+    {
+      ASSERT_EQ(ring.size(), n);
+      EXPECT_GT(m.loop_area(ring), 0.); // counter-clockwise
+      EXPECT_NEAR(m.loop_length(ring), 2 * n * r * std::sin(M_PI / n), 1e-12);
+    }
+
+  // Uneven along the rings (the same in every ring) and stretched by 1%.
+  for (unsigned int a = 0; a < m.n_nodes(); ++a)
+    {
+      const double i = std::round(std::atan2(m.position[a][1], m.position[a][0])
+                                  * n / (2 * M_PI));
+      const double t = 2 * M_PI * (i + 0.02 * std::sin(3. * i)) / n;
+      m.position[a]  = Point<3>(1.01 * r * std::cos(t),
+                               1.01 * r * std::sin(t),
+                               m.position[a][2]);
+    }
+  const std::vector<Point<3>> before = m.position;
+  m.compute_forces();
+  const auto spread = [&]() {
+    return *std::max_element(m.tension.begin(), m.tension.end())
+           - *std::min_element(m.tension.begin(), m.tension.end());
+  };
+  const double spread0 = spread();
+  for (unsigned int pass = 0; pass < 3; ++pass)
+    {
+      m.equalize_stretch();
+      m.compute_forces();
+    }
+  std::printf("measured 3D rings: triangle tension spread %.1f -> %.2e N/m "
+              "(mean %.1f)\n",
+              spread0,
+              spread(),
+              m.tension[0]);
+  EXPECT_GT(spread0, 100.);
+  EXPECT_LT(spread(), 1e-6 * m.tension[0]);
+  for (const auto &ring : m.rings)
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double l
+          = m.position[ring[k]].distance(m.position[ring[(k + 1) % n]]);
+        EXPECT_NEAR(l, 1.01 * 2 * r * std::sin(M_PI / n), 1e-9);
+      }
+  for (unsigned int a = 0; a < m.n_nodes(); ++a)
+    {
+      EXPECT_EQ(m.position[a][2], before[a][2]);
+      EXPECT_NEAR(std::hypot(m.position[a][0], m.position[a][1]),
+                  1.01 * r,
+                  1e-12);
+    }
+
+  // A tetrahedron's surface is closed but no extrusion.
+  const std::vector<Point<3>> tet = {Point<3>(0, 0, 0),
+                                     Point<3>(1, 0, 0),
+                                     Point<3>(0, 1, 0),
+                                     Point<3>(0, 0, 1)};
+  std::vector<CellData<2>>    faces(4, CellData<2>(3));
+  faces[0].vertices = {0, 2, 1};
+  faces[1].vertices = {0, 1, 3};
+  faces[2].vertices = {1, 2, 3};
+  faces[3].vertices = {0, 3, 2};
+  Triangulation<2, 3> tet_mesh;
+  tet_mesh.create_triangulation(tet, faces, SubCellData());
+  EXPECT_TRUE(Membrane<3>(tet_mesh, props).rings.empty());
 }

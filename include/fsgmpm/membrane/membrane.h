@@ -75,15 +75,23 @@ namespace fsgmpm
     split_long_elements(const double       max_length,
                         const unsigned int unknown_cell);
 
-    /// 2D closed loop, frictionless (slip) contact with the fill: move the
-    /// nodes along the membrane so that every cable has the same stretch
+    /// Frictionless (slip) contact with the fill: move the nodes along the
+    /// membrane so that every cable (2D closed loop) or every ring edge (3D
+    /// extruded membrane, each ring in its z plane) has the same stretch
     /// (uniform tension, as a fluid that carries no shear at rest allows).
     /// The curve is kept: nodes are placed on circular arcs through three
     /// consecutive nodes (averaged over the two arcs of each chord; exact on
     /// circular pieces), and the mean tangential shift is zero. Returns the
-    /// largest shift. 3D: does nothing.
+    /// largest shift. Does nothing for other membranes.
     double
     equalize_stretch();
+
+    /// Length and signed x-y area (positive counter-clockwise) of a closed
+    /// loop of nodes.
+    double
+    loop_length(const std::vector<unsigned int> &loop) const;
+    double
+    loop_area(const std::vector<unsigned int> &loop) const;
 
     /// Longest element edge in the current configuration.
     double
@@ -97,9 +105,18 @@ namespace fsgmpm
     /// EA/l t(x)t along the edge and the geometric stiffness T/l (I - t(x)t)
     /// across it (a taut cable resists sideways motion with its tension),
     /// plus the ground penalty along y: the directional stiffness that the
-    /// nodal time-step bound and the mass scaling need.
+    /// nodal time-step bound and the mass scaling need. With slip, the
+    /// axial part is loop_axial_stiffness() in every direction.
     std::vector<SymmetricTensor<2, dim>>
     nodal_stiffness() const;
+
+    /// With slip (2D closed loop, 3D rings): per node, a bound on the
+    /// stiffness that the loop's length change gives it, (EA/L) |theta_a|
+    /// sum_b |theta_b| (theta: turning angle at the node; 3D: times the
+    /// node's share of the height); nodal_stiffness() uses it in place of
+    /// the edges' EA/l in x-y, which equalize_stretch() spreads.
+    std::vector<double>
+    loop_axial_stiffness() const;
 
     /// Total current length (2D) or area (3D).
     double
@@ -110,7 +127,8 @@ namespace fsgmpm
     double
     enclosed_area() const;
 
-    /// Closed polygon of the nodes in element order (2D), for output.
+    /// Closed polygon of the nodes in element order (2D) or the first ring
+    /// (3D extruded membrane), for output.
     std::vector<Point<dim>>
     ordered_nodes() const;
 
@@ -124,6 +142,20 @@ namespace fsgmpm
     is_closed_loop() const;
 
     MembraneProperties properties;
+
+  private:
+    /// equalize_stretch() on one closed loop of nodes with the rest lengths
+    /// of its edges.
+    double
+    equalize_loop(const std::vector<unsigned int> &loop,
+                  const std::vector<double>       &rest_length);
+
+    /// Sets rings if every z level of the nodes is one closed loop of
+    /// element edges (3D).
+    void
+    find_rings();
+
+  public:
     /// Frictionless contact with the fill (2D): equalize_stretch() after
     /// every position update.
     bool tangential_slip = false;
@@ -147,6 +179,12 @@ namespace fsgmpm
     std::vector<Tensor<1, dim>> force;
     /// Background cell holding the node.
     std::vector<unsigned int> cell;
+
+    /// 3D membrane extruded along z (ellipse or polygon shapes): its nodes
+    /// at each z level in loop order (counter-clockwise in x-y), and the
+    /// rest lengths of the ring edges k -> k+1. Empty for other membranes.
+    std::vector<std::vector<unsigned int>> rings;
+    std::vector<std::vector<double>>       ring_rest_length;
 
     // --- elements --------------------------------------------------------
     std::vector<std::array<unsigned int, dim>> elements;
