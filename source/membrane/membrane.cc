@@ -254,9 +254,11 @@ namespace fsgmpm
     std::vector<double> s(n + 1, 0.), S(n + 1, 0.);
     for (unsigned int e = 0; e < n; ++e)
       {
-        s[e + 1]
-          = s[e] + position[node[e]].distance(position[node[(e + 1) % n]]);
-        S[e + 1] = S[e] + rest_length[e];
+        // In x-y: a 3D ring is equalized in its plane.
+        const Point<dim> &a = position[node[e]];
+        const Point<dim> &b = position[node[(e + 1) % n]];
+        s[e + 1]            = s[e] + std::hypot(b[0] - a[0], b[1] - a[1]);
+        S[e + 1]            = S[e] + rest_length[e];
       }
     const double length = s[n], rest = S[n];
     // Target arc length of node k: proportional to the rest length before
@@ -437,16 +439,23 @@ namespace fsgmpm
       {
         t[k] = position[loop[(k + 1) % n]] - position[loop[k]];
         l[k] = t[k].norm();
-        t[k] /= l[k];
+        if (l[k] > 0)
+          t[k] /= l[k];
       }
     double sum = 0, length = 0;
     for (unsigned int k = 0; k < n; ++k)
       {
         const unsigned int p = (k + n - 1) % n;
-        theta[k]             = std::acos(std::clamp(t[p] * t[k], -1., 1.));
+        // A zero-length edge (coincident nodes) adds no turning.
+        theta[k] = (l[p] > 0 && l[k] > 0)
+                     ? std::acos(std::clamp(t[p] * t[k], -1., 1.))
+                     : 0.;
         sum += theta[k];
         length += l[k];
       }
+    AssertThrow(length > 0,
+                ExcMessage("The membrane loop has zero length (all its nodes "
+                           "coincide)."));
     const double        EA = properties.axial_stiffness;
     std::vector<double> value(n);
     for (unsigned int k = 0; k < n; ++k)
@@ -460,15 +469,17 @@ namespace fsgmpm
         k_node[loop[k]] = value[k];
     else
       {
+        // Each ring's share of the height: half the distance between its
+        // neighbouring rings (find_rings() requires at least two).
         const unsigned int n_rings = rings.size();
-        const double       height  = std::abs(position[rings.back()[0]][dim - 1]
-                                       - position[rings[0][0]][dim - 1]);
+        auto               z       = [&](const unsigned int r) {
+          return position[rings[r][0]][dim - 1];
+        };
         for (unsigned int r = 0; r < n_rings; ++r)
           {
-            const double share
-              = (n_rings > 1) ? height / (n_rings - 1)
-                                  * ((r == 0 || r + 1 == n_rings) ? 0.5 : 1.)
-                              : 1.;
+            const double share = 0.5
+                                 * std::abs(z(std::min(r + 1, n_rings - 1))
+                                            - z(r > 0 ? r - 1 : 0));
             for (unsigned int k = 0; k < n; ++k)
               k_node[rings[r][k]] = share * value[k];
           }
@@ -584,6 +595,8 @@ namespace fsgmpm
         level[order[k]] = n_levels;
       }
     ++n_levels;
+    if (n_levels < 2)
+      return; // a flat membrane is no extrusion
 
     const unsigned int none = static_cast<unsigned int>(-1);
     std::vector<std::array<unsigned int, 2>> neighbours(n_nodes(),
@@ -661,6 +674,13 @@ namespace fsgmpm
                     best  = d;
                     first = k;
                   }
+              }
+            // The first nodes must be stacked exactly (an extrusion).
+            if (best > 1e-9 * loop_length(rings[0]))
+              {
+                rings.clear();
+                ring_rest_length.clear();
+                return;
               }
             std::rotate(ring.begin(), ring.begin() + first, ring.end());
           }

@@ -110,13 +110,6 @@ namespace fsgmpm
     std::vector<SymmetricTensor<2, dim>>
     nodal_stiffness() const;
 
-    /// With slip (2D closed loop, 3D rings): per node, a bound on the
-    /// stiffness that the loop's length change gives it, (EA/L) |theta_a|
-    /// sum_b |theta_b| (theta: turning angle at the node; 3D: times the
-    /// node's share of the height); nodal_stiffness() uses it in place of
-    /// the edges' EA/l in x-y, which equalize_stretch() spreads.
-    std::vector<double>
-    loop_axial_stiffness() const;
 
     /// Total current length (2D) or area (3D).
     double
@@ -144,6 +137,15 @@ namespace fsgmpm
     MembraneProperties properties;
 
   private:
+    /// With slip (2D closed loop, 3D rings): per node, a bound on the
+    /// stiffness that the loop's length change gives it, (EA/L) |theta_a|
+    /// sum_b |theta_b| (theta: turning angle at the node, floored at the
+    /// circle's pi (l_a + l_{a-1}) / L; 3D: times the node's share of the
+    /// height); nodal_stiffness() uses it in place of the edges' EA/l in x-y,
+    /// which equalize_stretch() spreads.
+    std::vector<double>
+    loop_axial_stiffness() const;
+
     /// equalize_stretch() on one closed loop of nodes with the rest lengths
     /// of its edges.
     double
@@ -156,8 +158,8 @@ namespace fsgmpm
     find_rings();
 
   public:
-    /// Frictionless contact with the fill (2D): equalize_stretch() after
-    /// every position update.
+    /// Frictionless contact with the fill (2D, 3D rings): equalize_stretch()
+    /// after every position update.
     bool tangential_slip = false;
     /// Transfer weights of each node to the nodes of its cell, set by
     /// Stages::membrane_p2g and used by the other membrane stages of the
