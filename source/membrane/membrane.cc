@@ -200,11 +200,7 @@ namespace fsgmpm
       {
         if (!is_closed_loop())
           return 0;
-        // Loop order: element e goes from node(e) to node(e+1).
-        std::vector<unsigned int> node(elements.size());
-        for (unsigned int e = 0; e < elements.size(); ++e)
-          node[e] = elements[e][0];
-        return equalize_loop(node, rest_size);
+        return equalize_loop(loop_nodes(), rest_size);
       }
     else
       {
@@ -426,15 +422,10 @@ namespace fsgmpm
     // bound of a circle (theta = 2 pi l/L) on straight pieces, where the
     // one pass of equalize_stretch() leaves some local stiffness. 3D: the
     // first ring's value times each node's share of the height.
-    std::vector<unsigned int> loop;
-    if constexpr (dim == 2)
-      for (const auto &el : elements)
-        loop.push_back(el[0]);
-    else
-      loop = rings[0];
-    const unsigned int          n = loop.size();
-    std::vector<double>         theta(n), l(n);
-    std::vector<Tensor<1, dim>> t(n);
+    const std::vector<unsigned int> loop = loop_nodes();
+    const unsigned int              n    = loop.size();
+    std::vector<double>             theta(n), l(n);
+    std::vector<Tensor<1, dim>>     t(n);
     for (unsigned int k = 0; k < n; ++k)
       {
         t[k] = position[loop[(k + 1) % n]] - position[loop[k]];
@@ -525,13 +516,24 @@ namespace fsgmpm
   Membrane<dim>::ordered_nodes() const
   {
     std::vector<Point<dim>> p;
-    if (dim == 3 && !rings.empty())
-      for (const unsigned int a : rings[0])
-        p.push_back(position[a]);
-    else
-      for (const auto &el : elements)
-        p.push_back(position[el[0]]);
+    for (const unsigned int a : loop_nodes())
+      p.push_back(position[a]);
     return p;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  Membrane<dim>::loop_nodes() const
+  {
+    if (dim == 3 && !rings.empty())
+      return rings[0];
+    // Element order: element e goes from node(e) to node(e+1) on a 2D loop.
+    std::vector<unsigned int> node(elements.size());
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      node[e] = elements[e][0];
+    return node;
   }
 
 

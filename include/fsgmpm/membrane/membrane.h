@@ -110,7 +110,6 @@ namespace fsgmpm
     std::vector<SymmetricTensor<2, dim>>
     nodal_stiffness() const;
 
-
     /// Total current length (2D) or area (3D).
     double
     total_size() const;
@@ -145,6 +144,12 @@ namespace fsgmpm
     /// which equalize_stretch() spreads.
     std::vector<double>
     loop_axial_stiffness() const;
+
+    /// The nodes in loop order: the first ring of an extruded 3D membrane,
+    /// else the first node of every element (a 2D closed loop is stored in
+    /// loop order).
+    std::vector<unsigned int>
+    loop_nodes() const;
 
     /// equalize_stretch() on one closed loop of nodes with the rest lengths
     /// of its edges.
