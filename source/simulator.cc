@@ -491,22 +491,33 @@ namespace fsgmpm
 
     double dt_stable = 0;
     timed(time_step_stage, [&] {
-      dt_stable
-        = Stages::stable_time_step(*grid, particles, materials, params.courant);
+      dt_stable = Stages::stable_time_step(*grid,
+                                           particles,
+                                           materials,
+                                           params.courant,
+                                           membrane ? &cell_stiffness : nullptr);
       if (membrane)
         {
-          // Combined bound 1/dt^2 = 1/dt_points^2 + 1/dt_membrane^2.
+          // The nodes the membrane touches: the nodal bound with the
+          // membrane's and the points' stiffness (which holds the points'
+          // share there, so the smaller of the two bounds governs).
           const double dt_m
             = params.courant
               * Stages::membrane_time_step(*grid,
                                            *membrane,
+                                           cell_stiffness,
+                                           particles.occupied_cells,
                                            nodes,
                                            params.mass_scaling
                                              ? dt_stable / params.courant
                                              : 0.);
-          dt_stable
-            = 1. / std::sqrt(1. / (dt_stable * dt_stable) + 1. / (dt_m * dt_m));
+          dt_stable = std::min(dt_stable, dt_m);
         }
+      // Local damping -alpha |F| sign(v) stiffens every node by up to
+      // (1 + alpha) while it moves away from equilibrium, so the central
+      // difference limit 2 sqrt(m/k) drops to 2 sqrt(m/((1 + alpha) k))
+      // (exact for one degree of freedom; doc/stability.md).
+      dt_stable /= std::sqrt(1. + params.local_damping);
     });
     if (params.fixed_dt > 0)
       {

@@ -208,6 +208,8 @@ namespace fsgmpm
     std::unique_ptr<BackgroundGrid<dim>>   grid;
     std::unique_ptr<NodalConstraints<dim>> constraints;
     NodalFields<dim>                       nodes;
+    /// Per cell sum_p V_p M_p for the membrane's nodal time-step bound.
+    std::vector<double>                    cell_stiffness;
     ParticleStore<dim>                     particles;
     std::vector<std::unique_ptr<Material>> materials;
     std::vector<MaterialOptions>           material_options;

@@ -50,19 +50,23 @@ namespace fsgmpm
 
     template <int dim>
     double
-    membrane_time_step(const BackgroundGrid<dim> &grid,
-                       const Membrane<dim>       &membrane,
-                       NodalFields<dim>          &nodes,
-                       const double               dt_floor)
+    membrane_time_step(const BackgroundGrid<dim>       &grid,
+                       const Membrane<dim>             &membrane,
+                       const std::vector<double>       &cell_stiffness,
+                       const std::vector<unsigned int> &occupied_cells,
+                       NodalFields<dim>                &nodes,
+                       const double                     dt_floor)
     {
       // Block Gershgorin bound on the membrane stiffness projected to the
       // grid: element blocks k [A -A; -A A] <= 2 k diag(A, A) and convex
       // transfer weights give K <= diag_i(D_i) with the directional
       // D_i = c0 sum_a N_i(x_a) K_a (Membrane::nodal_stiffness; c0 = 2.5
       // leaves a margin over the exact 2). The explicit update is stable if
-      // m_i I + added_i >= dt^2 D_i / 4: dt <= 2 sqrt((m_i + added)/lambda)
-      // over the eigenpairs of D_i, with the full nodal mass (fluid
-      // included). The accumulation uses added_mass as scratch.
+      // m_i I + added_i >= dt^2 (D_i + k_p,i I) / 4: dt <= 2 sqrt((m_i +
+      // added)/lambda) over the eigenpairs of D_i + k_p,i I, with the full
+      // nodal mass (fluid included) and the points' stiffness k_p,i (the
+      // same row-sum bound for V_p M_p grad N_i . grad N_j, M_p the P-wave
+      // modulus). The accumulation uses added_mass as scratch.
       const double c0
         = (dim == 2)
             ? 2.5
@@ -85,12 +89,36 @@ namespace fsgmpm
       std::sort(touched.begin(), touched.end());
       touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
 
+      // The points' row sums on the touched nodes.
+      std::vector<double> k_points(touched.size(), 0.);
+      if (!cell_stiffness.empty())
+        for (const unsigned int c : occupied_cells)
+          {
+            const auto  &grad = grid.shape_gradients[c];
+            const double S    = cell_stiffness[c];
+            if (!(S > 0))
+              continue;
+            double row = 0;
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              row += grad[k].norm();
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              {
+                const auto it = std::lower_bound(touched.begin(),
+                                                 touched.end(),
+                                                 grid.cell_nodes[c][k]);
+                if (it != touched.end() && *it == grid.cell_nodes[c][k])
+                  k_points[it - touched.begin()] += S * grad[k].norm() * row;
+              }
+          }
+
       double dt = std::numeric_limits<double>::max();
-      for (const unsigned int i : touched)
+      for (unsigned int t = 0; t < touched.size(); ++t)
         {
-          const SymmetricTensor<2, dim> D = nodes.added_mass[i];
-          nodes.added_mass[i]             = SymmetricTensor<2, dim>();
-          const double m                  = nodes.mass[i];
+          const unsigned int            i = touched[t];
+          const SymmetricTensor<2, dim> D
+            = nodes.added_mass[i] + k_points[t] * unit_symmetric_tensor<dim>();
+          nodes.added_mass[i] = SymmetricTensor<2, dim>();
+          const double m      = nodes.mass[i];
           if (m <= 0)
             continue;
           for (const auto &[k, e] : eigenvectors(D))
@@ -204,10 +232,13 @@ namespace fsgmpm
   template void         membrane_p2g<dim>(const BackgroundGrid<dim> &,       \
                                   Membrane<dim> &,                   \
                                   NodalFields<dim> &);               \
-  template double       membrane_time_step<dim>(const BackgroundGrid<dim> &, \
-                                          const Membrane<dim> &,       \
-                                          NodalFields<dim> &,          \
-                                          const double);               \
+  template double       membrane_time_step<dim>(                             \
+    const BackgroundGrid<dim> &,                                             \
+    const Membrane<dim> &,                                                   \
+    const std::vector<double> &,                                             \
+    const std::vector<unsigned int> &,                                       \
+    NodalFields<dim> &,                                                      \
+    const double);                                                           \
   template void         membrane_g2p<dim>(const BackgroundGrid<dim> &,       \
                                   const NodalFields<dim> &,          \
                                   Membrane<dim> &);                  \

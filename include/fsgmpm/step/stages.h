@@ -167,13 +167,18 @@ namespace fsgmpm
     relocate(const BackgroundGrid<dim> &grid, ParticleStore<dim> &particles);
 
     /// Stable time step C * min over points of h / (c_p + |v_p| + 2 d nu/h)
-    /// (wave speed, particle speed, and the explicit viscous limit).
+    /// (wave speed, particle speed, and the explicit viscous limit;
+    /// source/step/time_step.cc). If @p cell_stiffness is given, it is set
+    /// to sum_p V_p rho_p s_p^2 per cell (s_p the same signal speed; zero in
+    /// empty cells), the points' share of the nodal bound of
+    /// membrane_time_step().
     template <int dim>
     double
     stable_time_step(const BackgroundGrid<dim>                    &grid,
                      const ParticleStore<dim>                     &particles,
                      const std::vector<std::unique_ptr<Material>> &materials,
-                     const double                                  courant);
+                     const double                                  courant,
+                     std::vector<double> *cell_stiffness = nullptr);
 
     // --- FEM-MPM membrane coupling (shared grid nodes) -------------------
     // Membrane nodes take part in the transfers like material points, with
@@ -191,10 +196,16 @@ namespace fsgmpm
                  Membrane<dim>             &membrane,
                  NodalFields<dim>          &nodes);
 
-    /// Nodal time-step bound of SPEC 2 with the membrane: min over grid
-    /// nodes and directions of 2 sqrt(m_i / k), k an eigenvalue of the
-    /// membrane stiffness projected to node i (block Gershgorin; the nodal
-    /// mass includes the fluid's added mass). Without the Courant factor.
+    /// Nodal time-step bound of SPEC 2 with the membrane: min over the grid
+    /// nodes the membrane touches and over directions of 2 sqrt(m_i / k),
+    /// k an eigenvalue of the block Gershgorin bound of the stiffness at
+    /// node i: the membrane's, projected to the node, plus the material
+    /// points' sum_c S_c |grad N_i^c| sum_j |grad N_j^c| (S_c from
+    /// stable_time_step()'s @p cell_stiffness over @p occupied_cells). The
+    /// points' share matters at nearly empty nodes of partly covered cells
+    /// (the geotube's lower corners): the membrane nodes take their grid
+    /// velocity before the remap (PIC), so such a node's small mass is not
+    /// protected by Eq. (20) as the points are. Without the Courant factor.
     /// If @p dt_floor > 0 (dynamic relaxation with mass scaling), the
     /// directions whose bound would fall below dt_floor get the fictitious
     /// inertia NodalFields::added_mass = (k dt_floor^2 / 4 - m_i) e(x)e
@@ -202,10 +213,12 @@ namespace fsgmpm
     /// is at least dt_floor.
     template <int dim>
     double
-    membrane_time_step(const BackgroundGrid<dim> &grid,
-                       const Membrane<dim>       &membrane,
-                       NodalFields<dim>          &nodes,
-                       const double               dt_floor = 0);
+    membrane_time_step(const BackgroundGrid<dim>       &grid,
+                       const Membrane<dim>             &membrane,
+                       const std::vector<double>       &cell_stiffness,
+                       const std::vector<unsigned int> &occupied_cells,
+                       NodalFields<dim>                &nodes,
+                       const double                     dt_floor = 0);
 
     /// Stage 3m: membrane-node velocities from the grid velocities (PIC).
     template <int dim>
