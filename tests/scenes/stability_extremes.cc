@@ -514,3 +514,21 @@ end
             << 100 * out.relative_drift << " %" << std::endl;
   EXPECT_LT(out.relative_drift, 0.05);
 }
+
+
+
+// Real water in a membrane: the shipped geotube_A3.36 (8 cm, K_f = 2.13 GPa,
+// Courant 0.5) for 6000 steps (0.1 s). With the time step before issue 13
+// (the membrane's nodal bound without the points' stiffness, commit
+// f98da97) it stopped as unstable at step 4543: the nearly empty grid nodes
+// the membrane touches at the lower corners (doc/stability.md).
+TEST(StabilityExtremes, RealWaterGeotube)
+{
+  auto prm = test_tools::make_parameters_from_scene("geotube_A3.36.prm");
+  prm->enter_subsection("Simulation");
+  prm->set("Maximum number of steps", "6000");
+  prm->leave_subsection();
+  Simulator<2> sim(*prm);
+  const auto   out = run(sim, "geotube A = 3.36 m2, 8 cm, real water");
+  EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
+}
