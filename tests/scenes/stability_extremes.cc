@@ -101,7 +101,10 @@ namespace
               << out.created_ratio << std::endl;
     EXPECT_TRUE(state_is_finite(sim)) << name << ": non-finite state";
     if (out.termination == "unstable")
-      EXPECT_FALSE(out.diagnosis.empty()) << name;
+      {
+        EXPECT_FALSE(out.diagnosis.empty()) << name;
+        std::cout << "             diagnosis: " << out.diagnosis << std::endl;
+      }
     else
       {
         EXPECT_TRUE(out.termination == "end_time" ||
