@@ -13,18 +13,18 @@
 // the nominal 5.56 m^2 and 9.2 m (the user's error) is printed.
 // Asserts (issue 13: tolerances a few times the measured errors, not the
 // issue's acceptance aims, so that a change of a few per cent shows):
-// 2D: H/W within 0.002 of the analytic value for the measured area and
-// length (measured -0.0002) and within 0.008 of the nominal 5.56 m^2,
-// 9.2 m one (measured -0.0023); mean tension within 2% of the analytic
-// value for the measured area and length (measured -0.5%) and within 4% of
-// the nominal one (measured -1.5%); top and bottom pressure of the line fit
-// within 2% of the analytic bottom pressure (measured -0.6% and +0.4% of
-// it). The max/mean tension check (1%) only guards the slip projection,
+// 2D: H/W within 0.004 of the analytic value for the measured area and
+// length (measured -0.0013 with the damped time-step bound, -0.0002
+// before) and within 0.008 of the nominal 5.56 m^2, 9.2 m one (measured
+// -0.0030); mean tension within 2% of the analytic value for the measured
+// area and length (measured -0.2%) and within 4% of the nominal one
+// (measured -1.0%); top and bottom pressure of the line fit within 3% of
+// the analytic bottom pressure (measured -0.4% and +1.1% of it). The max/mean tension check (1%) only guards the slip projection,
 // which makes the tension uniform by construction. No point lost and at
 // most 0.5% of the points outside the membrane.
 // The same for the 3D variant (prm/geotube_A5.56_3d.prm, 8-10 s), measured
-// H/W -0.0045 (own) and -0.0062 (nominal), tension +1.2% and +0.3%, p_top
-// -2.1% and p_bottom -0.2% of p_bottom: H/W within 0.012 and 0.015, tension
+// H/W -0.0050 (own) and -0.0067 (nominal), tension +0.8% and 0.0%, p_top
+// -1.3% and p_bottom -1.6% of p_bottom (with the damped time-step bound): H/W within 0.012 and 0.015, tension
 // within 3% and 3%, pressures within 4%.
 // Measured values: see the [ measured ] lines and doc/membrane_validation.md.
 // Label validation (geotube_coarse_eq30), not yet met: convergence by
@@ -196,7 +196,7 @@ namespace
 TEST(GeotubeCoarse, ShapeAndTensionMatchAnalytic)
 {
   auto prm = coarse_parameters(12.0);
-  check_coarse_geotube<2>(*prm, 8.0, "16 cm", {0.002, 0.008, 0.02, 0.04, 0.02});
+  check_coarse_geotube<2>(*prm, 8.0, "16 cm", {0.004, 0.008, 0.02, 0.04, 0.03});
 }
 
 // The 3D variant (prm/geotube_A5.56_3d.prm): tetrahedra one cell thick with

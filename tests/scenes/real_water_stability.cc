@@ -6,12 +6,13 @@
 // Starting in exact equilibrium this mainly shows that nothing is created
 // from nothing; the second test perturbs it: the same column with a
 // two-dimensional velocity perturbation v_y = v0 sin(pi y / H) cos(pi x / W),
-// v0 = 0.01 m/s, must keep the perturbation bounded over 3000 steps: the
-// kinetic energy never exceeds 1.5 times the perturbation's (it trades
-// with strain energy in the acoustic modes), the energy balance
-// (kinetic + strain - external work) holds within 10% of the perturbation
-// energy, and the pressure stays within 2% of rho g H of the hydrostatic
-// one.
+// v0 = 1 mm/s (acoustic pressure rho c v0 = 0.3 rho g H), must keep the
+// perturbation bounded over 3000 steps: the kinetic energy never exceeds
+// 1.02 times the perturbation's (measured 0.9999: it trades with strain
+// energy in the acoustic modes), the energy balance (kinetic + strain -
+// external work) holds within 15% of the perturbation energy (measured
+// 6.8%), the interior pressure error stays below 7% of rho g H during the
+// run (measured 4.9%) and returns below 2% at the end (measured 1.56%).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
@@ -73,7 +74,7 @@ end
 
 TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
 {
-  const double H = 0.5, W = 0.08, rho = 1000, g = 9.81, h = 0.02, v0 = 0.01;
+  const double H = 0.5, W = 0.08, rho = 1000, g = 9.81, h = 0.02, v0 = 1e-3;
   auto         prm = test_tools::make_parameters(R"(
 subsection Simulation
   set End time = 1
@@ -102,9 +103,24 @@ end
   const auto  &m0       = sim.get_monitors();
   const double ke0      = m0.kinetic_energy;
   const double balance0 = m0.kinetic_energy + m0.strain_energy;
-  double       max_ke = 0, max_imbalance = 0;
+  double       max_ke = 0, max_imbalance = 0, max_error_run = 0;
+  // Largest interior pressure error / rho g H now.
+  auto pressure_error = [&]() {
+    double e = 0;
+    for (unsigned int p = 0; p < ps.size(); ++p)
+      {
+        const double y = ps.position[p][1];
+        if (y > h && y < H - h)
+          e = std::max(e,
+                       std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
+                         / (rho * g * H));
+      }
+    return e;
+  };
   while (sim.advance())
     {
+      if (sim.get_step() % 10 == 0)
+        max_error_run = std::max(max_error_run, pressure_error());
       const auto &m = sim.get_monitors();
       max_ke        = std::max(max_ke, m.kinetic_energy);
       max_imbalance =
@@ -129,9 +145,11 @@ end
             << "energy " << ke0 << " J/m, max kinetic energy / it = "
             << max_ke / ke0 << ", final " << sim.get_monitors().kinetic_energy / ke0
             << ", max |energy balance drift| / it = " << max_imbalance / ke0
-            << ", max pressure error / rho g H = " << 100 * max_error << " %"
+            << ", final max pressure error / rho g H = " << 100 * max_error
+            << " %, largest during the run " << 100 * max_error_run << " %"
             << std::endl;
-  EXPECT_LT(max_ke / ke0, 1.5);
-  EXPECT_LT(max_imbalance / ke0, 0.1);
+  EXPECT_LT(max_ke / ke0, 1.02);
+  EXPECT_LT(max_imbalance / ke0, 0.15);
   EXPECT_LT(max_error, 0.02);
+  EXPECT_LT(max_error_run, 0.07);
 }

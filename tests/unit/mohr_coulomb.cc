@@ -319,9 +319,9 @@ namespace
 
 TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
 {
-  std::mt19937 random(20240513);
+  std::mt19937 generator(20240513);
   auto         uniform = [&](const double a, const double b) {
-    return a + (b - a) * (random() / 4294967296.);
+    return a + (b - a) * (generator() / 4294967296.);
   };
   unsigned int counts[5] = {0, 0, 0, 0, 0};
   double       worst_distance = 0, worst_surface = 0, worst_sample = 1e300;
@@ -345,7 +345,7 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
           for (unsigned int i = 0; i < 3; ++i)
             for (unsigned int j = i; j < 3; ++j)
               trial[i][j] = uniform(-0.75, 0.75) * scale;
-          trial += uniform(-1, 0.25) * scale * unit_symmetric_tensor<3>();
+          trial += uniform(-1, 0.4) * scale * unit_symmetric_tensor<3>();
           MohrCoulomb::Return kind;
           const auto          s = m.return_mapping(trial, kind);
           ++counts[static_cast<int>(kind)];
@@ -380,9 +380,12 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
             << "trial " << trial;
           if (elastic)
             continue;
-          // The returned stress is on the surface ...
-          const auto      e        = eigenvalues(s);
-          const Principal returned = {{e[0], e[1], e[2]}};
+          // The returned stress is on the surface (principal values on the
+          // trial's axes, which it shares: deal.II's closed-form
+          // eigenvalues() loses 1e-8 at the repeated roots of an edge) ...
+          Principal returned;
+          for (unsigned int i = 0; i < 3; ++i)
+            returned[i] = eig[i].second * (s * eig[i].second);
           worst_surface =
             std::max(worst_surface, std::abs(brute.f_max(returned)) / size);
           EXPECT_NEAR(brute.f_max(returned), 0, 1e-10 * size);
@@ -415,5 +418,5 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
             << std::endl;
   // Every kind of return is exercised.
   for (const unsigned int n : counts)
-    EXPECT_GT(n, 20u);
+    EXPECT_GE(n, 10u);
 }
