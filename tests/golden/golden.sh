@@ -1,6 +1,7 @@
 #!/bin/bash
 # Golden-output regression of every scene shipped in prm/: a short run
-# (Maximum number of steps = STEPS, no particle output) on 1 and on 2
+# (Maximum number of steps = STEPS, monitors every step, no particle
+# output) on 1 and on 2
 # threads, each compared with the stored tests/golden/<scene>.csv by
 # compare_monitors.py (worst relative difference per column, relative to
 # the column's largest magnitude; tolerance 1e-9: results are meant to be
@@ -39,7 +40,8 @@ for scene in "${scenes[@]}"; do
       --set "Simulation/Maximum number of steps=$STEPS" \
       --set "Simulation/Number of threads=$threads" \
       --set "Output/Directory=$dir" --set "Output/Write particles=false" \
-      --set "Output/Quiet=true" > "$work/log" 2>&1
+      --set "Output/Monitor every n steps=1" --set "Output/Quiet=true" \
+      > "$work/log" 2>&1
     status=$?
     wall=$((($(date +%s%N) - start) / 1000000))
     if [ $status != 0 ] || [ ! -s "$dir/monitors.csv" ]; then
