@@ -11,13 +11,22 @@
 // membrane, hydrostatic fill, frictionless base) for the run's own measured
 // enclosed area and membrane length (the solver's error); the error against
 // the nominal 5.56 m^2 and 9.2 m (the user's error) is printed.
-// Asserts: H/W within 0.05 (issue 5; measured -0.0002), mean tension within
-// 10% (measured -0.5%), uniform tension (frictionless slip: max/mean - 1 <
-// 1%), top and bottom pressure of the line fit within 5% of the analytic
-// bottom pressure (measured -0.6% and +0.4% of it), no point lost and at
+// Asserts (issue 13: tolerances a few times the measured errors, not the
+// issue's acceptance aims, so that a change of a few per cent shows):
+// 2D: H/W within 0.004 of the analytic value for the measured area and
+// length (measured -0.0013 with the damped time-step bound, -0.0002
+// before) and within 0.008 of the nominal 5.56 m^2, 9.2 m one (measured
+// -0.0030); mean tension within 2% of the analytic value for the measured
+// area and length (measured -0.2%) and within 4% of the nominal one
+// (measured -1.0%); top and bottom pressure of the line fit within 3% of
+// the analytic bottom pressure (measured -0.4% and +1.1% of it). The max/mean tension check (1%) only guards the slip projection,
+// which makes the tension uniform by construction. No point lost and at
 // most 0.5% of the points outside the membrane.
-// The same for the 3D variant (prm/geotube_A5.56_3d.prm, 8-10 s): H/W
-// -0.0045, tension +1.2%, p_top -2.1% and p_bottom -0.2% of p_bottom.
+// The same for the 3D variant (prm/geotube_A5.56_3d.prm, 8-10 s), measured
+// H/W -0.0050 (own) and -0.0067 (nominal), tension +0.8% and 0.0%, p_top
+// -1.3% and p_bottom -1.6% of p_bottom (with the damped time-step bound): H/W within 0.012 and 0.015, tension
+// within 3% and 3%, pressures within 4%.
+// Measured values: see the [ measured ] lines and doc/membrane_validation.md.
 // Label validation (geotube_coarse_eq30), not yet met: convergence by
 // Eq. (30) at 1e-3 within 30 s of relaxation.
 
@@ -94,11 +103,18 @@ namespace
   // Runs the scene to @p end_time, averages the monitors from @p from on,
   // and checks them against the analytic solution for the measured
   // enclosed area and membrane length (tolerances in the file header).
+  // Tolerances (see the file header).
+  struct Tolerances
+  {
+    double hw, hw_nominal, tension, tension_nominal, pressure;
+  };
+
   template <int dim>
   void
   check_coarse_geotube(ParameterHandler  &prm,
                        const double       from,
-                       const std::string &label)
+                       const std::string &label,
+                       const Tolerances  &tol)
   {
     Simulator<dim>                sim(prm);
     std::map<std::string, double> m;
@@ -159,31 +175,41 @@ namespace
                 sim.get_monitors().dr_energy_ratio,
                 sim.get_monitors().dr_force_ratio);
 
-    EXPECT_NEAR(hw, ref.height / ref.width, 0.05);
-    EXPECT_NEAR(m.at("mean_tension") / ref.tension, 1., 0.10);
+    // Against the analytic solution for the run's own area and length (the
+    // solver's error) and for the nominal ones (the user's error).
+    EXPECT_NEAR(hw, ref.height / ref.width, tol.hw);
+    EXPECT_NEAR(hw, nominal.height / nominal.width, tol.hw_nominal);
+    EXPECT_NEAR(m.at("mean_tension") / ref.tension, 1., tol.tension);
+    EXPECT_NEAR(m.at("mean_tension") / nominal.tension,
+                1.,
+                tol.tension_nominal);
+    // Uniform by construction of the slip projection: a guard only.
     EXPECT_LT(m.at("max_tension") / m.at("mean_tension") - 1, 1e-2);
     EXPECT_EQ(sim.get_monitors().lost_particles, 0u);
     EXPECT_LE(m.at("particles_outside"), 0.005 * sim.get_particles().size());
     // The linear fit of the pressure (16 points per cell; with 4 the bottom
     // pressure came out 11% high).
-    expect_pressures(m, ref, 0.05);
+    expect_pressures(m, ref, tol.pressure);
   }
 } // namespace
 
 TEST(GeotubeCoarse, ShapeAndTensionMatchAnalytic)
 {
   auto prm = coarse_parameters(12.0);
-  check_coarse_geotube<2>(*prm, 8.0, "16 cm");
+  check_coarse_geotube<2>(*prm, 8.0, "16 cm", {0.004, 0.008, 0.02, 0.04, 0.03});
 }
 
 // The 3D variant (prm/geotube_A5.56_3d.prm): tetrahedra one cell thick with
 // roller faces, the membrane an extruded elliptic cylinder of triangles
 // (stacked nodes share x-y: plane strain), 8 points per tetrahedron; the
-// monitors are per ring and per unit thickness. Same tolerances as 2D.
+// monitors are per ring and per unit thickness. Tolerances in the file header.
 TEST(GeotubeCoarse, Slab3DMatchesAnalytic)
 {
   auto prm = coarse_parameters(10.0, "geotube_A5.56_3d.prm");
-  check_coarse_geotube<3>(*prm, 8.0, "3D slab 16 cm");
+  check_coarse_geotube<3>(*prm,
+                          8.0,
+                          "3D slab 16 cm",
+                          {0.012, 0.015, 0.03, 0.03, 0.04});
 }
 
 TEST(GeotubeCoarseValidation, ConvergesByEq30)

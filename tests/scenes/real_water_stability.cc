@@ -3,6 +3,16 @@
 // hydrostatic state with no damping must stay there: no NaN, termination
 // end_time, kinetic energy bounded (below 1e-6 of rho g H * volume), and the
 // pressure within 2% of rho g H of p = rho g (H - y) (interior rows).
+// Starting in exact equilibrium this mainly shows that nothing is created
+// from nothing; the second test perturbs it: the same column with a
+// two-dimensional velocity perturbation v_y = v0 sin(pi y / H) cos(pi x / W),
+// v0 = 1 mm/s (acoustic pressure rho c v0 = 0.3 rho g H), must keep the
+// perturbation bounded over 3000 steps: the kinetic energy never exceeds
+// 1.02 times the perturbation's (measured 0.9999: it trades with strain
+// energy in the acoustic modes), the energy balance (kinetic + strain -
+// external work) holds within 15% of the perturbation energy (measured
+// 6.8%), the interior pressure error stays below 7% of rho g H during the
+// run (measured 4.9%) and returns below 2% at the end (measured 1.56%).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
@@ -60,4 +70,86 @@ end
             << std::endl;
   EXPECT_LT(max_ke / energy_scale, 1e-6);
   EXPECT_LT(max_error, 0.02);
+}
+
+TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
+{
+  const double H = 0.5, W = 0.08, rho = 1000, g = 9.81, h = 0.02, v0 = 1e-3;
+  auto         prm = test_tools::make_parameters(R"(
+subsection Simulation
+  set End time = 1
+  set Maximum number of steps = 3000
+end
+subsection Grid
+  set Upper corner = 0.08, 0.6
+  set Subdivisions = 4, 30
+  set Boundary conditions = 0: roller, 1: roller, 2: roller
+end
+subsection Bodies
+  subsection Body 0
+    set Material model = Newtonian fluid
+    set Initial stress = hydrostatic
+    set Box lower corner = 0, 0
+    set Box upper corner = 0.08, 0.5
+  end
+end
+)");
+  Simulator<2> sim(*prm);
+  auto        &ps = sim.get_particles();
+  for (unsigned int p = 0; p < ps.size(); ++p)
+    ps.velocity[p][1] = v0 * std::sin(M_PI * ps.position[p][1] / H)
+                        * std::cos(M_PI * ps.position[p][0] / W);
+  sim.reinitialize_state();
+  const auto  &m0       = sim.get_monitors();
+  const double ke0      = m0.kinetic_energy;
+  const double balance0 = m0.kinetic_energy + m0.strain_energy;
+  double       max_ke = 0, max_imbalance = 0, max_error_run = 0;
+  // Largest interior pressure error / rho g H now.
+  auto pressure_error = [&]() {
+    double e = 0;
+    for (unsigned int p = 0; p < ps.size(); ++p)
+      {
+        const double y = ps.position[p][1];
+        if (y > h && y < H - h)
+          e = std::max(e,
+                       std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
+                         / (rho * g * H));
+      }
+    return e;
+  };
+  while (sim.advance())
+    {
+      if (sim.get_step() % 10 == 0)
+        max_error_run = std::max(max_error_run, pressure_error());
+      const auto &m = sim.get_monitors();
+      max_ke        = std::max(max_ke, m.kinetic_energy);
+      max_imbalance =
+        std::max(max_imbalance,
+                 std::abs(m.kinetic_energy + m.strain_energy - m.external_work
+                          - balance0));
+    }
+  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  EXPECT_EQ(sim.get_step(), 3000u);
+  double max_error = 0;
+  for (unsigned int p = 0; p < ps.size(); ++p)
+    {
+      const double y = ps.position[p][1];
+      ASSERT_TRUE(std::isfinite(y) && std::isfinite(trace(ps.stress[p])));
+      if (y > h && y < H - h)
+        max_error
+          = std::max(max_error,
+                     std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
+                       / (rho * g * H));
+    }
+  std::cout << "[ measured ] perturbed real-water column: perturbation "
+            << "energy " << ke0 << " J/m, max kinetic energy / it = "
+            << max_ke / ke0 << ", final " << sim.get_monitors().kinetic_energy / ke0
+            << ", max |energy balance drift| / it = " << max_imbalance / ke0
+            << ", final max pressure error / rho g H = " << 100 * max_error
+            << " %, largest during the run " << 100 * max_error_run << " %"
+            << std::endl;
+  EXPECT_LT(max_ke / ke0, 1.02);
+  EXPECT_LT(max_imbalance / ke0, 0.15);
+  EXPECT_LT(max_error, 0.02);
+  EXPECT_LT(max_error_run, 0.07);
 }
