@@ -137,7 +137,9 @@ TEST(GranularCollapse, ComesToRestWithTheRunoutOfLube)
       EXPECT_LT(V / V0, 1.12);
       EXPECT_NEAR(profile_area / V, 1., 0.12);
       if (a < 1.15)
-        EXPECT_NEAR(H_inf / (a * 0.2), 1., 0.07);
+        {
+          EXPECT_NEAR(H_inf / (a * 0.2), 1., 0.07);
+        }
       EXPECT_NEAR(measured / lube, 1., 0.25);
     }
 }
