@@ -18,6 +18,7 @@
 #include "test_utilities.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 using namespace fsgmpm;
@@ -35,6 +36,19 @@ namespace
     double       created_ratio  = 0; // max created energy / energy put in
     double       relative_drift = 0; // max |E - E0 - W + D| / (E0 + |W|)
   };
+
+  // FSGMPM_STABILITY_COURANT=C runs every case at Courant number C
+  // (doc/stability.md measures the cases' limits with it).
+  void
+  apply_courant_override(dealii::ParameterHandler &prm)
+  {
+    if (const char *c = std::getenv("FSGMPM_STABILITY_COURANT"))
+      {
+        prm.enter_subsection("Simulation");
+        prm.set("Courant number", std::string(c));
+        prm.leave_subsection();
+      }
+  }
 
   template <int dim>
   bool
@@ -121,7 +135,8 @@ namespace
       const std::string &name,
       const double       energy_bound = kEnergyBound)
   {
-    auto           prm = test_tools::make_parameters(prm_text);
+    auto prm = test_tools::make_parameters(prm_text);
+    apply_courant_override(*prm);
     Simulator<dim> sim(*prm);
     return run(sim, name, energy_bound);
   }
@@ -245,6 +260,7 @@ TEST(StabilityExtremes, LonePointAndNearEmptyNode)
     {
       auto prm = test_tools::make_parameters(
         elastic_block("2: fixed", "0, 0", 4000));
+      apply_courant_override(*prm);
       Simulator<2> sim(*prm);
       auto        &ps = sim.get_particles();
       // The point with the largest x + y, moved to just above the grid line
@@ -316,6 +332,7 @@ TEST(StabilityExtremes, MembraneStiffnessAndMass)
           prm->leave_subsection();
           prm->leave_subsection();
           prm->leave_subsection();
+          apply_courant_override(*prm);
           // With mass scaling the fictitious nodal inertia's kinetic
           // energy is not in kinetic_energy: the balance holds to 10%
           // (measured 6.6% at 5 GN/m, 0.01 kg/m^2).
@@ -506,6 +523,7 @@ subsection Bodies
   end
 end
 )");
+  apply_courant_override(*prm);
   Simulator<2> sim(*prm);
   auto        &ps = sim.get_particles();
   for (unsigned int p = 0; p < ps.size(); ++p)
@@ -531,6 +549,7 @@ TEST(StabilityExtremes, RealWaterGeotube)
   prm->enter_subsection("Simulation");
   prm->set("Maximum number of steps", "6000");
   prm->leave_subsection();
+  apply_courant_override(*prm);
   Simulator<2> sim(*prm);
   const auto   out = run(sim, "geotube A = 3.36 m2, 8 cm, real water");
   EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
