@@ -236,15 +236,16 @@ namespace fsgmpm
                     ExcMessage("Membrane node " + std::to_string(a) + " at "
                                + to_string(membrane->position[a])
                                + " lies outside the mesh; move or shrink "
-                                 "the membrane (subsection Membrane) or "
-                                 "enlarge the grid."));
+                                 "the membrane (Membrane/Lowest point, "
+                                 "Circumference and Enclosed area, or "
+                                 "Polygon vertices) or enlarge the grid."));
       }
     AssertThrow(membrane->max_element_length()
                     <= membrane_split_length * (1 + 1e-9)
                   || dim == 2,
                 ExcMessage("Membrane elements are longer than Membrane/"
                            "Split length grid cells; use a finer membrane "
-                           "mesh."));
+                           "mesh (Membrane/Mesh file or Element size)."));
   }
 
 
@@ -817,8 +818,14 @@ namespace fsgmpm
             stage_seconds[output_stage]
               += std::chrono::duration<double>(Clock::now() - t0).count();
             last_output_step = step;
-            while (interval_output && next_output_time <= time * (1 + 1e-12))
-              next_output_time += params.output_interval;
+            // The next multiple of the interval after now (a loop adding
+            // the interval would never end when it is below the round-off
+            // of the time).
+            if (interval_output && next_output_time <= time * (1 + 1e-12))
+              next_output_time
+                = params.output_interval
+                  * (std::floor(time * (1 + 1e-12) / params.output_interval)
+                     + 1);
           }
         if (!params.quiet
             && std::chrono::duration<double>(Clock::now() - last_progress)

@@ -33,9 +33,11 @@ def main():
         area, cell, directory = run.split(":", 2)
         with open(directory + "/monitors.csv") as f:
             rows = [r for r in csv.DictReader(f) if float(r["time"]) >= t0]
-        mean = {k: sum(float(r[k]) for r in rows) / len(rows)
-                for k in rows[0]}
-        forces = sorted(float(r["dr_force_ratio"]) for r in rows)
+        # An empty field is an undefined Eq. (30) ratio (no external work).
+        rows = [{k: float(v) if v else float("inf") for k, v in r.items()}
+                for r in rows]
+        mean = {k: sum(r[k] for r in rows) / len(rows) for k in rows[0]}
+        forces = sorted(r["dr_force_ratio"] for r in rows)
         with open(directory + "/summary.json") as f:
             summary = json.load(f)
         nom = analytic(exe, 9.2, area)

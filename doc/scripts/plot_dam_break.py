@@ -34,7 +34,8 @@ def read_monitors(run_dir):
         data = {k: [] for k in reader.fieldnames}
         for row in reader:
             for k in reader.fieldnames:
-                data[k].append(float(row[k]))
+                # Empty: an undefined Eq. (30) ratio (no external work yet).
+                data[k].append(float(row[k]) if row[k] else float("nan"))
     return {k: np.array(v) for k, v in data.items()}
 
 

@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 namespace fsgmpm
 {
@@ -52,7 +54,31 @@ namespace fsgmpm
                              + file_name + ">."));
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(triangulation);
-      grid_in.read_msh(in);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          AssertThrow(false,
+                      ExcMessage("Grid/Mesh file <" + file_name
+                                 + "> is not a readable Gmsh mesh of "
+                                 + std::to_string(dim)
+                                 + "D simplices: "
+                                 + Utilities::trim(info.str())));
+        }
+      catch (std::exception &e)
+        {
+          AssertThrow(false,
+                      ExcMessage("Grid/Mesh file <" + file_name
+                                 + "> is not a readable Gmsh mesh: "
+                                 + e.what()));
+        }
+      AssertThrow(triangulation.n_active_cells() > 0,
+                  ExcMessage("Grid/Mesh file <" + file_name
+                             + "> holds no cells."));
       AssertThrow(triangulation.all_reference_cells_are_simplex(),
                   ExcMessage("Grid/Mesh file <" + file_name
                              + "> must contain only triangles (2D) or "

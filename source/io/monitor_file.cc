@@ -37,9 +37,13 @@ namespace fsgmpm
     char        buffer[40];
     for (unsigned int i = 0; i < values.size(); ++i)
       {
-        std::snprintf(buffer, sizeof(buffer), "%.17g", values[i]);
         if (i)
           row += ',';
+        // An undefined value (the Eq. (30) ratios before there is any
+        // external work or force) is an empty field, never "inf" or "nan".
+        if (!std::isfinite(values[i]))
+          continue;
+        std::snprintf(buffer, sizeof(buffer), "%.17g", values[i]);
         row += buffer;
       }
     row += '\n';

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 #include <cmath>
 #include <limits>
@@ -82,19 +83,19 @@ namespace fsgmpm
                   const double       fallback,
                   const std::string &path)
     {
-      if (Utilities::trim(text) == "auto")
+      const std::string t = Utilities::trim(text);
+      if (t == "auto")
         return fallback;
-      try
-        {
-          return Utilities::string_to_double(text);
-        }
-      catch (...)
-        {
-          AssertThrow(false,
-                      ExcMessage(path + " must be a number or auto; got <"
-                                 + text + ">."));
-        }
-      return fallback;
+      std::istringstream in(t);
+      double             x = 0;
+      in >> x;
+      AssertThrow(!in.fail() && in.eof() && std::isfinite(x)
+                    && std::abs(x) <= 1e9,
+                  ExcMessage(path
+                             + " must be auto or a finite number (m, within "
+                               "+-1e9); got <"
+                             + text + ">."));
+      return x;
     }
   } // namespace
 

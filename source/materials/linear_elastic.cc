@@ -21,8 +21,8 @@ namespace fsgmpm
     prm.enter_subsection("Linear elastic");
     prm.declare_entry("Young's modulus",
                       "1e6",
-                      Patterns::Double(0),
-                      "Young's modulus E in Pa (> 0).");
+                      Patterns::Double(0, 1e13),
+                      "Young's modulus E in Pa (> 0, at most 1e13).");
     prm.declare_entry("Poisson's ratio",
                       "0.3",
                       Patterns::Double(-1, 0.5),

@@ -45,8 +45,8 @@ namespace fsgmpm
     prm.enter_subsection("Mohr-Coulomb");
     prm.declare_entry("Young's modulus",
                       "5e6",
-                      Patterns::Double(0),
-                      "Young's modulus E in Pa (> 0).");
+                      Patterns::Double(0, 1e13),
+                      "Young's modulus E in Pa (> 0, at most 1e13).");
     prm.declare_entry("Poisson's ratio",
                       "0.3",
                       Patterns::Double(-1, 0.5),
@@ -59,11 +59,15 @@ namespace fsgmpm
                       "0",
                       Patterns::Double(0, 90),
                       "psi in degrees, 0 <= psi <= phi.");
-    prm.declare_entry("Cohesion", "0", Patterns::Double(0), "c in Pa (>= 0).");
+    prm.declare_entry("Cohesion",
+                      "0",
+                      Patterns::Double(0, 1e13),
+                      "c in Pa (>= 0, at most 1e13).");
     prm.declare_entry("Maximum volume ratio",
                       "1.2",
-                      Patterns::Double(1),
-                      "Cap on a point's volume ratio V/V0 (> 1): points "
+                      Patterns::Double(1, 1e6),
+                      "Cap on a point's volume ratio V/V0 (> 1, at most "
+                      "1e6): points "
                       "that come apart at the apex (tension) stop growing "
                       "here; uncapped they reached 100 V0 at a flow front "
                       "and made the run unstable when pushed back into "
@@ -99,9 +103,9 @@ namespace fsgmpm
                 ExcMessage(p + "Dilatancy angle must lie in [0, phi]; got "
                            + std::to_string(psi) + "."));
     AssertThrow(phi > 0 || c > 0,
-                ExcMessage(p
-                           + "a material with no friction and no cohesion "
-                             "has no strength."));
+                ExcMessage(p + "Friction angle and " + p
+                           + "Cohesion are both 0: a material with no "
+                             "friction and no cohesion has no strength."));
     AssertThrow(J_max > 1,
                 ExcMessage(p + "Maximum volume ratio must exceed 1; got "
                            + std::to_string(J_max) + "."));

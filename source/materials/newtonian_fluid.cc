@@ -3,6 +3,7 @@
 #include <fsgmpm/materials/newtonian_fluid.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace fsgmpm
 {
@@ -28,14 +29,16 @@ namespace fsgmpm
     prm.enter_subsection("Newtonian fluid");
     prm.declare_entry("Bulk modulus",
                       "2.13e9",
-                      Patterns::Double(0),
-                      "K_f in Pa (> 0); water 2.13e9. A weakly compressible "
-                      "value (sound speed >= 10x the flow speed) is the "
-                      "largest speed lever.");
+                      Patterns::Double(1, 1e13),
+                      "K_f in Pa (1 to 1e13); water 2.13e9. A "
+                      "weakly compressible value (sound speed >= 10x the "
+                      "flow speed) is the largest speed lever.");
     prm.declare_entry("Viscosity",
                       "8.9e-4",
-                      Patterns::Double(0),
-                      "Dynamic viscosity mu in Pa s (>= 0); water 8.9e-4.");
+                      Patterns::Double(0, 1e10),
+                      "Dynamic viscosity mu in Pa s (>= 0, at most 1e10, "
+                      "about that of bitumen at room temperature); water "
+                      "8.9e-4.");
     prm.declare_entry("Pressure law",
                       "linear",
                       Patterns::Selection("linear|power"),
@@ -43,8 +46,8 @@ namespace fsgmpm
                       "(K_f/kappa)((rho/rho_ref)^kappa - 1), Eq. (15).");
     prm.declare_entry("Power-law exponent",
                       "7",
-                      Patterns::Double(0),
-                      "kappa of the power law (> 0).");
+                      Patterns::Double(0.01, 100),
+                      "kappa of the power law (0.01 to 100).");
     prm.declare_entry("Allow tension",
                       "false",
                       Patterns::Bool(),
@@ -76,7 +79,10 @@ namespace fsgmpm
                 ExcMessage(path
                            + "/Newtonian fluid/Power-law exponent must "
                              "be positive."));
-    return std::make_unique<NewtonianFluid>(K, mu, density, law, kappa, allow);
+    auto fluid
+      = std::make_unique<NewtonianFluid>(K, mu, density, law, kappa, allow);
+    fluid->path = path;
+    return fluid;
   }
 
 
@@ -93,9 +99,20 @@ namespace fsgmpm
   double
   NewtonianFluid::volume_ratio_for_pressure(const double p) const
   {
-    return law == PressureLaw::linear
-             ? 1. - p / K
-             : std::pow(1. + kappa * p / K, -1. / kappa);
+    const double J = law == PressureLaw::linear
+                       ? 1. - p / K
+                       : std::pow(1. + kappa * p / K, -1. / kappa);
+    if (!(std::isfinite(J) && J > 0.5 && J < 2))
+      {
+        std::ostringstream message;
+        message << path << "/Newtonian fluid/Bulk modulus = " << K
+                << " Pa is too small for the initial pressure " << p
+                << " Pa: the fluid would start at a volume ratio " << J
+                << " (0.5 to 2 are allowed); raise the Bulk modulus well "
+                   "above the pressure.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    return J;
   }
 
 

@@ -52,13 +52,18 @@ namespace fsgmpm
     std::pair<double, double>
     ellipse_axes(const double L, const double A)
     {
-      AssertThrow(L > 0 && A > 0 && A < L * L / (4. * M_PI),
+      AssertThrow(L > 0 && A >= 1e-3 * L * L / (4. * M_PI)
+                    && A < L * L / (4. * M_PI),
                   ExcMessage("An ellipse of circumference " + std::to_string(L)
                              + " m cannot enclose " + std::to_string(A)
-                             + " m^2: the area must lie in (0, L^2/(4 pi)) = "
-                               "(0, "
+                             + " m^2: the area must lie in [1e-3, 1) L^2/(4 "
+                               "pi) = ["
+                             + std::to_string(1e-3 * L * L / (4. * M_PI))
+                             + ", "
                              + std::to_string(L * L / (4. * M_PI))
-                             + ") (a circle holds the most)."));
+                             + ") (a circle holds the most; a smaller area "
+                               "gives an ellipse flatter than b/a = "
+                               "4e-4)."));
       // Bisection on the axis ratio r = b/a in (0, 1]: with a from the
       // area (pi a b = A) the perimeter grows as r falls.
       double lo = 1e-12, hi = 1.;
@@ -131,13 +136,14 @@ namespace fsgmpm
                         "grid's thickness.");
       prm.declare_entry("Circumference",
                         "9.2",
-                        Patterns::Double(0),
-                        "Shape = ellipse: rest length of the membrane (m).");
+                        Patterns::Double(0, 1e6),
+                        "Shape = ellipse: rest length of the membrane (m, "
+                        "at most 1e6).");
       prm.declare_entry("Enclosed area",
                         "5.56",
                         Patterns::Double(0),
                         "Shape = ellipse: area inside the ellipse (m^2), "
-                        "below Circumference^2/(4 pi).");
+                        "from 1e-3 to below 1 times Circumference^2/(4 pi).");
       prm.declare_entry("Lowest point",
                         "3, 0",
                         Patterns::List(Patterns::Double(), 2, 2),
@@ -159,10 +165,10 @@ namespace fsgmpm
                         "Initial element length (m); 0: 0.4 grid cells.");
       prm.declare_entry("Split length",
                         "0.5",
-                        Patterns::Double(0),
+                        Patterns::Double(0.1, 1),
                         "A cable longer than this many grid cells is split "
                         "in two (fluid leaks between nodes farther apart than "
-                        "about one cell); in (0, 1].");
+                        "about one cell); in [0.1, 1].");
       prm.declare_entry("Tangential coupling",
                         "no-slip",
                         Patterns::Selection("no-slip|slip"),
@@ -184,15 +190,15 @@ namespace fsgmpm
                         "below it. none: no ground.");
       prm.declare_entry("Ground stiffness",
                         "1e7",
-                        Patterns::Double(0),
+                        Patterns::Double(0, 1e15),
                         "Penalty stiffness per membrane node (N/m per metre "
-                        "in 2D): a node below the ground gets k times its "
-                        "depth upwards. The penetration is about the bottom "
-                        "pressure times the element size / k.");
+                        "in 2D, at most 1e15): a node below the ground gets k "
+                        "times its depth upwards. The penetration is about "
+                        "the bottom pressure times the element size / k.");
       prm.declare_entry("Axial stiffness",
                         "5e7",
-                        Patterns::Double(0),
-                        "EA = E * thickness (N/m).");
+                        Patterns::Double(0, 1e12),
+                        "EA = E * thickness (N/m, at most 1e12).");
       prm.declare_entry("Poisson ratio",
                         "0.3",
                         Patterns::Double(-1, 1),
@@ -204,8 +210,8 @@ namespace fsgmpm
                         "length / (1 + eps0); > 0 starts in tension.");
       prm.declare_entry("Areal mass",
                         "0.5",
-                        Patterns::Double(0),
-                        "Mass per membrane area (kg/m^2, > 0).");
+                        Patterns::Double(0, 1e4),
+                        "Mass per membrane area (kg/m^2, > 0, at most 1e4).");
     }
     prm.leave_subsection();
   }
@@ -223,6 +229,10 @@ namespace fsgmpm
     const auto lp
       = parse_vector<2>(prm.get("Lowest point"), "Membrane/Lowest point");
     bottom                     = Point<2>(lp);
+    AssertThrow(std::abs(bottom[0]) <= 1e9 && std::abs(bottom[1]) <= 1e9,
+                ExcMessage("Membrane/Lowest point must lie within +-1e9 m; "
+                           "got <"
+                           + prm.get("Lowest point") + ">."));
     mesh_file                  = prm.get("Mesh file");
     element_size               = prm.get_double("Element size");
     split_fraction             = prm.get_double("Split length");
@@ -246,8 +256,10 @@ namespace fsgmpm
                                      "or none; got <"
                                      + g + ">."));
             }
-          AssertThrow(std::isfinite(ground_level),
-                      ExcMessage("Membrane/Ground level must be finite."));
+          AssertThrow(std::abs(ground_level) <= 1e9,
+                      ExcMessage("Membrane/Ground level must be a finite "
+                                 "number within +-1e9 m or none; got <"
+                                 + g + ">."));
           ground_stiffness = prm.get_double("Ground stiffness");
           AssertThrow(ground_stiffness > 0,
                       ExcMessage("Membrane/Ground stiffness must be "
@@ -258,6 +270,11 @@ namespace fsgmpm
       {
         polygon = parse_polygon(prm.get("Polygon vertices"),
                                 "Membrane/Polygon vertices");
+        for (const auto &v : polygon)
+          AssertThrow(std::abs(v[0]) <= 1e9 && std::abs(v[1]) <= 1e9,
+                      ExcMessage("Membrane/Polygon vertices must lie within "
+                                 "+-1e9 m; got <"
+                                 + prm.get("Polygon vertices") + ">."));
         try
           {
             PolygonShape check(polygon);
@@ -274,8 +291,8 @@ namespace fsgmpm
     prm.leave_subsection();
     if (!enabled)
       return;
-    AssertThrow(split_fraction > 0 && split_fraction <= 1,
-                ExcMessage("Membrane/Split length must lie in (0, 1] grid "
+    AssertThrow(split_fraction >= 0.1 && split_fraction <= 1,
+                ExcMessage("Membrane/Split length must lie in [0.1, 1] grid "
                            "cells; got "
                            + std::to_string(split_fraction) + "."));
     AssertThrow(properties.axial_stiffness > 0,
@@ -317,6 +334,21 @@ namespace fsgmpm
   {
     const double h
       = size_factor * ((element_size > 0) ? element_size : 0.4 * cell_size);
+    {
+      double length = circumference;
+      if (shape != "ellipse")
+        {
+          length = 0;
+          for (unsigned int i = 0; i < polygon.size(); ++i)
+            length += polygon[i].distance(polygon[(i + 1) % polygon.size()]);
+        }
+      AssertThrow(length / h <= 1e6,
+                  ExcMessage("The membrane would have more than 1e6 elements "
+                             "of " + std::to_string(h)
+                             + " m; increase Membrane/Element size or shorten "
+                               "the membrane (Membrane/Circumference or "
+                               "Polygon vertices)."));
+    }
     // The closed outline in x-y, counter-clockwise, with elements of at
     // most h.
     std::vector<Point<2>> outline;
@@ -369,7 +401,30 @@ namespace fsgmpm
                                + ">."));
         GridIn<dim - 1, dim> grid_in;
         grid_in.attach_triangulation(mesh);
-        grid_in.read_msh(in);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            AssertThrow(false,
+                        ExcMessage("Membrane/Mesh file <" + mesh_file
+                                   + "> is not a readable Gmsh mesh of "
+                                     "3-node triangles: "
+                                   + Utilities::trim(info.str())));
+          }
+        catch (std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("Membrane/Mesh file <" + mesh_file
+                                   + "> is not a readable Gmsh mesh: "
+                                   + e.what()));
+          }
+        AssertThrow(mesh.n_active_cells() > 0,
+                    ExcMessage("Membrane/Mesh file <" + mesh_file
+                               + "> holds no triangles."));
         return;
       }
 

@@ -105,14 +105,16 @@ namespace fsgmpm
             const std::uint16_t        body_id,
             ParticleStore<dim>        &particles)
   {
+    const std::string body_name
+      = "Body " + std::to_string(body_id) + " (" + shape.description()
+        + (shape.parameters.empty() ? "" : ", from " + shape.parameters);
     for (const Point<dim> &p : shape.outline_points())
       {
         // Allow round-off on the mesh boundary.
         const double tol = 1e-9;
         AssertThrow(grid.find_cell_brute_force(p, tol)
                       != BackgroundGrid<dim>::invalid,
-                    ExcMessage("Body " + std::to_string(body_id) + " ("
-                               + shape.description()
+                    ExcMessage(body_name
                                + ") reaches outside the background mesh, e.g. "
                                  "at the point ("
                                +
@@ -146,8 +148,7 @@ namespace fsgmpm
           }
       }
     AssertThrow(added > 0,
-                ExcMessage("Body " + std::to_string(body_id) + " ("
-                           + shape.description()
+                ExcMessage(body_name
                            + ") contains no material point: it is smaller "
                              "than the grid resolution or outside the mesh."));
     return added;

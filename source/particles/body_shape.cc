@@ -2,6 +2,8 @@
 
 #include <fsgmpm/particles/body_shape.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace fsgmpm
@@ -127,6 +129,18 @@ namespace fsgmpm
   {
     const unsigned int n = vertices.size();
     AssertThrow(n >= 3, ExcMessage("A polygon needs at least three vertices."));
+    double size = 0, twice_area = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Point<2> &a = vertices[i], &b = vertices[(i + 1) % n];
+        AssertThrow(a.distance(b) > 0,
+                    ExcMessage("Vertices " + std::to_string(i) + " and "
+                               + std::to_string((i + 1) % n)
+                               + " of the polygon coincide; give each "
+                                 "vertex once."));
+        size = std::max(size, a.distance(vertices[0]));
+        twice_area += a[0] * b[1] - b[0] * a[1];
+      }
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
         {
@@ -141,6 +155,9 @@ namespace fsgmpm
                                  + std::to_string(i) + " and "
                                  + std::to_string(j) + ")."));
         }
+    AssertThrow(std::abs(twice_area) > 1e-12 * size * size,
+                ExcMessage("The polygon encloses no area (its vertices lie on "
+                           "one line)."));
   }
 
   bool
@@ -215,7 +232,9 @@ namespace fsgmpm
   std::string
   CrossSectionShape<dim>::description() const
   {
-    return "cross-section " + polygon.description();
+    return "the inside of the membrane, " + polygon.description()
+           + ", from Membrane/Circumference, Enclosed area and Lowest point "
+             "(Shape = ellipse) or Membrane/Polygon vertices";
   }
 
   template class CrossSectionShape<2>;

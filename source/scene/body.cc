@@ -74,13 +74,13 @@ namespace fsgmpm
                           "i.e. 1, 4, 16, 64 in 2D and 1, 8, 64 in 3D.");
         prm.declare_entry("Density",
                           "1000",
-                          Patterns::Double(0),
-                          "Mass density (kg/m^3, > 0).");
+                          Patterns::Double(1e-3, 1e5),
+                          "Mass density (kg/m^3, 1e-3 to 1e5).");
         prm.declare_entry("Initial velocity",
                           "0, 0",
                           Patterns::List(Patterns::Double()),
-                          "Initial velocity (m/s); in 3D a two-entry value "
-                          "means z = 0.");
+                          "Initial velocity (m/s, at most 1e5 in magnitude); "
+                          "in 3D a two-entry value means z = 0.");
         prm.declare_entry("Material model",
                           "linear elastic",
                           Patterns::Selection(
@@ -121,9 +121,9 @@ namespace fsgmpm
           "fluids with the matching density (uses Simulation/Gravity).");
         prm.declare_entry("K0",
                           "0.5",
-                          Patterns::Double(0),
+                          Patterns::Double(0, 10),
                           "Lateral stress ratio for Initial stress = "
-                          "geostatic.");
+                          "geostatic (0 to 10).");
         LinearElastic::declare_parameters(prm);
         MohrCoulomb::declare_parameters(prm);
         NewtonianFluid::declare_parameters(prm);
@@ -136,6 +136,30 @@ namespace fsgmpm
 
   namespace
   {
+    // Sanity bounds: far beyond any physical value, low enough that
+    // energies and stresses stay finite.
+    constexpr double min_density = 1e-3; // kg/m^3; air: 1.2
+    constexpr double max_density = 1e5;  // kg/m^3; osmium: 22 590
+    constexpr double max_speed   = 1e5;  // m/s
+    constexpr double max_k0      = 10;   // lateral stress ratio
+
+    std::string
+    to_string(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+
+    template <int dim>
+    std::string
+    to_string(const Point<dim> &p)
+    {
+      std::ostringstream s;
+      s << p;
+      return s.str();
+    }
+
     template <int dim>
     Point<dim>
     parse_point(const std::string &text, const std::string &path)
@@ -160,12 +184,32 @@ namespace fsgmpm
         body.path = "Bodies/Body " + std::to_string(b);
         prm.enter_subsection("Body " + std::to_string(b));
         const std::string shape = prm.get("Shape");
+        // A box from its corners; its errors name the parameters.
+        const auto make_box = [&](const Point<dim>  &lower,
+                                  const Point<dim>  &upper,
+                                  const std::string &parameters) {
+          try
+            {
+              body.shape = std::make_unique<BoxShape<dim>>(lower, upper);
+            }
+          catch (ExceptionBase &e)
+            {
+              std::ostringstream info;
+              e.print_info(info);
+              AssertThrow(false,
+                          ExcMessage(parameters + ": "
+                                     + Utilities::trim(info.str())
+                                     + " Got [" + to_string(lower) + "] - ["
+                                     + to_string(upper) + "]."));
+            }
+          body.shape->parameters = parameters;
+        };
         if (shape == "box")
-          body.shape = std::make_unique<BoxShape<dim>>(
-            parse_point<dim>(prm.get("Box lower corner"),
-                             body.path + "/Box lower corner"),
-            parse_point<dim>(prm.get("Box upper corner"),
-                             body.path + "/Box upper corner"));
+          make_box(parse_point<dim>(prm.get("Box lower corner"),
+                                    body.path + "/Box lower corner"),
+                   parse_point<dim>(prm.get("Box upper corner"),
+                                    body.path + "/Box upper corner"),
+                   body.path + "/Box lower corner and Box upper corner");
         else if (shape == "column")
           {
             const Point<dim> base
@@ -183,14 +227,22 @@ namespace fsgmpm
             if (dim == 3)
               upper[2] = parse_point<dim>(prm.get("Box upper corner"),
                                           body.path + "/Box upper corner")[2];
-            body.shape = std::make_unique<BoxShape<dim>>(base, upper);
+            make_box(base,
+                     upper,
+                     body.path
+                       + "/Column base corner, Column width and Column "
+                         "aspect ratio");
           }
         else if (shape == "ellipse")
-          body.shape = std::make_unique<EllipseShape<dim>>(
-            parse_point<dim>(prm.get("Ellipse center"),
-                             body.path + "/Ellipse center"),
-            parse_vector<dim>(prm.get("Ellipse semi-axes"),
-                              body.path + "/Ellipse semi-axes"));
+          {
+            body.shape = std::make_unique<EllipseShape<dim>>(
+              parse_point<dim>(prm.get("Ellipse center"),
+                               body.path + "/Ellipse center"),
+              parse_vector<dim>(prm.get("Ellipse semi-axes"),
+                                body.path + "/Ellipse semi-axes"));
+            body.shape->parameters
+              = body.path + "/Ellipse center and Ellipse semi-axes";
+          }
         else if (shape == "membrane")
           body.fills_membrane = true; // the shape is set with the membrane
         else
@@ -203,6 +255,7 @@ namespace fsgmpm
                 try
                   {
                     body.shape = std::make_unique<PolygonShape>(vertices);
+                    body.shape->parameters = body.path + "/Polygon vertices";
                   }
                 catch (ExceptionBase &e)
                   {
@@ -236,12 +289,20 @@ namespace fsgmpm
                         + std::to_string(body.particles_per_cell) + "."));
         }
         body.density = prm.get_double("Density");
-        AssertThrow(body.density > 0,
-                    ExcMessage(body.path + "/Density must be positive; got "
+        AssertThrow(body.density >= min_density
+                      && body.density <= max_density,
+                    ExcMessage(body.path + "/Density must lie in ["
+                               + to_string(min_density) + ", "
+                               + to_string(max_density) + "] kg/m^3; got "
                                + prm.get("Density") + "."));
         body.initial_velocity
           = parse_vector<dim>(prm.get("Initial velocity"),
                               body.path + "/Initial velocity");
+        AssertThrow(body.initial_velocity.norm() <= max_speed,
+                    ExcMessage(body.path
+                               + "/Initial velocity must not exceed "
+                               + to_string(max_speed) + " m/s; got <"
+                               + prm.get("Initial velocity") + ">."));
         const std::string initial = prm.get("Initial stress");
         body.initial_stress
           = initial == "geostatic"
@@ -250,6 +311,10 @@ namespace fsgmpm
                    ? BodyDescription<dim>::InitialStress::hydrostatic
                    : BodyDescription<dim>::InitialStress::none);
         body.k0                 = prm.get_double("K0");
+        AssertThrow(body.k0 <= max_k0,
+                    ExcMessage(body.path + "/K0 must lie in [0, "
+                               + to_string(max_k0) + "]; got "
+                               + prm.get("K0") + "."));
         const std::string model = prm.get("Material model");
         if (model == "linear elastic")
           body.material = LinearElastic::create(prm, body.density, body.path);

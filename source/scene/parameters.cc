@@ -6,8 +6,29 @@
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 
+#include <limits>
+#include <sstream>
+
 namespace fsgmpm
 {
+  namespace
+  {
+    /// Largest coordinate of a box corner (m).
+    constexpr double max_coordinate = 1e9;
+
+    /// A number in the shortest form (std::to_string gives 0.000000 for
+    /// 1e-301).
+    std::string
+    format(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
   template <int dim>
   Tensor<1, dim>
   parse_vector(const std::string &text, const std::string &path)
@@ -97,8 +118,9 @@ namespace fsgmpm
       prm.declare_entry("Gravity",
                         "0, -9.81",
                         Patterns::List(Patterns::Double()),
-                        "Gravitational acceleration (m/s^2); y is vertical. "
-                        "In 3D a two-entry value means z = 0.");
+                        "Gravitational acceleration (m/s^2, at most 1e5 in "
+                        "magnitude); y is vertical. In 3D a two-entry value "
+                        "means z = 0.");
       prm.declare_entry("Gravity ramp time",
                         "0",
                         Patterns::Double(0),
@@ -122,9 +144,9 @@ namespace fsgmpm
                         "is at rest.");
       prm.declare_entry("Number of threads",
                         "0",
-                        Patterns::Integer(0),
+                        Patterns::Integer(0, 1024),
                         "Threads for the particle and grid loops (0: all "
-                        "cores or DEAL_II_NUM_THREADS).");
+                        "cores or DEAL_II_NUM_THREADS; at most 1024).");
     }
     prm.leave_subsection();
 
@@ -203,20 +225,22 @@ namespace fsgmpm
       prm.declare_entry("Extrusion thickness",
                         "0.1",
                         Patterns::Double(0),
-                        "Type = extruded box: thickness in z (m, > 0).");
+                        "Type = extruded box: thickness in z (m, > 0; "
+                        "1e-3 to 1e3 times the cell size).");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double()),
-                        "Type = box: lower corner (m).");
+                        "Type = box: lower corner (m, within +-1e9).");
       prm.declare_entry("Upper corner",
                         "1, 0.6",
                         Patterns::List(Patterns::Double()),
-                        "Type = box: upper corner (m).");
+                        "Type = box: upper corner (m, within +-1e9).");
       prm.declare_entry("Subdivisions",
                         "40, 24",
                         Patterns::List(Patterns::Integer(1)),
                         "Type = box: number of squares/cubes per direction, "
-                        "each split into 2 triangles (2D) or 5-6 tets (3D).");
+                        "each split into 2 triangles (2D) or 5-6 tets (3D); "
+                        "at most 1e7 squares/cubes, each at least 1e-6 m.");
       prm.declare_entry("Cell size",
                         "0",
                         Patterns::Double(0),
@@ -294,6 +318,10 @@ namespace fsgmpm
     use_musl  = (prm.get("Update scheme") == "MUSL");
     use_apic  = (prm.get("Velocity transfer") == "APIC");
     gravity   = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
+    AssertThrow(gravity.norm() <= 1e5,
+                ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "
+                           "(10^4 g) in magnitude; got <"
+                           + prm.get("Gravity") + ">."));
     gravity_ramp_time   = prm.get_double("Gravity ramp time");
     stop_when_converged = (prm.get("Termination") == "dr_converged");
     stop_when_at_rest   = (prm.get("Termination") == "at_rest");
@@ -346,9 +374,23 @@ namespace fsgmpm
         if (box_dim == 2 && dim == 3)
           upper_corner[2] = extrusion_thickness;
         for (unsigned int d = 0; d < box_dim; ++d)
-          AssertThrow(upper_corner[d] > lower_corner[d],
-                      ExcMessage("Grid/Upper corner must exceed Grid/Lower "
-                                 "corner in every coordinate."));
+          {
+            AssertThrow(upper_corner[d] > lower_corner[d],
+                        ExcMessage("Grid/Upper corner must exceed Grid/Lower "
+                                   "corner in every coordinate"
+                                   + std::string(dim == 3 && box_dim == 3
+                                                   ? " (in 3D give x, y, z)"
+                                                   : "")
+                                   + "; got <" + prm.get("Lower corner")
+                                   + "> and <" + prm.get("Upper corner")
+                                   + ">."));
+            AssertThrow(std::abs(lower_corner[d]) <= max_coordinate
+                          && std::abs(upper_corner[d]) <= max_coordinate,
+                        ExcMessage("Grid/Lower corner and Grid/Upper corner "
+                                   "must lie within +-1e9 m; got <"
+                                   + prm.get("Lower corner") + "> and <"
+                                   + prm.get("Upper corner") + ">."));
+          }
         const auto items
           = Utilities::split_string_list(prm.get("Subdivisions"), ',');
         AssertThrow(items.size() == box_dim,
@@ -361,15 +403,57 @@ namespace fsgmpm
         if (cell_size > 0)
           for (unsigned int d = 0; d < box_dim; ++d)
             {
-              subdivisions[d]
-                = std::max<long>(1,
-                                 std::lround((upper_corner[d] - lower_corner[d])
-                                             / cell_size));
-              AssertThrow(subdivisions[d] <= 100000,
+              const double n = (upper_corner[d] - lower_corner[d]) / cell_size;
+              AssertThrow(n <= 100000,
                           ExcMessage("Grid/Cell size is too small for the "
                                      "box: more than 100000 cells per "
                                      "direction."));
+              AssertThrow(n >= 0.5,
+                          ExcMessage("Grid/Cell size (" + prm.get("Cell size")
+                                     + " m) is larger than the box (Grid/"
+                                       "Lower corner to Grid/Upper corner) "
+                                       "in direction "
+                                     + std::to_string(d) + "."));
+              subdivisions[d] = std::max<long>(1, std::lround(n));
             }
+        // Enough cells to be useful, few enough to fit in memory, and
+        // cells well above the round-off of their coordinates.
+        double n_cells = 1;
+        for (unsigned int d = 0; d < box_dim; ++d)
+          {
+            n_cells *= subdivisions[d];
+            const double h
+              = (upper_corner[d] - lower_corner[d]) / subdivisions[d];
+            AssertThrow(h >= 1e-6
+                          && h >= 1e-9
+                                    * std::max(std::abs(lower_corner[d]),
+                                               std::abs(upper_corner[d])),
+                        ExcMessage("Grid cells would be " + format(h)
+                                   + " m wide in direction "
+                                   + std::to_string(d)
+                                   + ": at least 1e-6 m and 1e-9 of the "
+                                     "coordinates are needed; check Grid/"
+                                     "Lower corner, Grid/Upper corner and "
+                                     "Grid/Subdivisions or Grid/Cell size."));
+          }
+        if (grid_type == "extruded box")
+          {
+            double h_min = std::numeric_limits<double>::max();
+            for (unsigned int d = 0; d < 2; ++d)
+              h_min = std::min(h_min,
+                               (upper_corner[d] - lower_corner[d])
+                                 / subdivisions[d]);
+            AssertThrow(extrusion_thickness >= 1e-3 * h_min
+                          && extrusion_thickness <= 1e3 * h_min,
+                        ExcMessage("Grid/Extrusion thickness must lie within "
+                                   "1e-3 to 1e3 times the cell size ("
+                                   + format(h_min) + " m); got "
+                                   + prm.get("Extrusion thickness") + "."));
+          }
+        AssertThrow(n_cells <= 1e7,
+                    ExcMessage("Grid/Subdivisions (or Grid/Cell size) give "
+                               + format(n_cells)
+                               + " squares/cubes; at most 1e7 are allowed."));
       }
     mesh_file = prm.get("Mesh file");
     AssertThrow(grid_type != "gmsh" || !mesh_file.empty(),

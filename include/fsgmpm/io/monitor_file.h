@@ -10,7 +10,10 @@ namespace fsgmpm
   /**
    * monitors.csv: a header row, then one row per monitored step at full
    * precision (%.17g). Each row goes out in one write and is flushed, so a
-   * killed run leaves only complete rows.
+   * killed run leaves only complete rows. A non-finite value is written as
+   * an empty field: the Eq. (30) ratios are undefined (infinite) while the
+   * external work or force is zero; every other column is finite, since the
+   * instability guard stops a run before it writes a non-finite state.
    */
   class MonitorFile
   {

@@ -75,6 +75,8 @@ namespace fsgmpm
       return mu;
     }
 
+    /// Throws, naming Bulk modulus, if the pressure would compress the
+    /// fluid to a non-positive volume.
     double
     volume_ratio_for_pressure(const double pressure) const override;
 
@@ -98,6 +100,8 @@ namespace fsgmpm
     const PressureLaw law;
     const double      kappa;
     const bool        allow_tension;
+    /// The body's parameter path ("Bodies/Body 0"), for messages.
+    std::string path;
   };
 } // namespace fsgmpm
 

@@ -28,6 +28,10 @@ namespace fsgmpm
     outline_points() const = 0;
     virtual std::string
     description() const = 0;
+
+    /// The input parameters that define the shape (for messages), e.g.
+    /// "Bodies/Body 0/Box lower corner and Box upper corner"; may be empty.
+    std::string parameters;
   };
 
   template <int dim>
