@@ -427,7 +427,9 @@ TEST(StabilityExtremes, ImpactAt20MetresPerSecond)
                               "20 m/s impact on a '" + wall + "' wall",
                               friction ? 0.5 : kEnergyBound);
       if (!friction)
-        EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
+        {
+          EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
+        }
     }
 }
 
@@ -486,7 +488,9 @@ end
                               heavy_on_top ? "heavy stiff on light soft"
                                            : "light soft on heavy stiff");
       if (!heavy_on_top)
-        EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
+        {
+          EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
+        }
     }
 }
 
