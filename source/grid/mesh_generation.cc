@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <fsgmpm/grid/mesh_generation.h>
+#include <fsgmpm/io/gmsh_reader.h>
 
 #include <algorithm>
 #include <fstream>
@@ -48,37 +49,10 @@ namespace fsgmpm
     void
     read_gmsh(const std::string &file_name, Triangulation<dim> &triangulation)
     {
-      std::ifstream in(file_name);
-      AssertThrow(in.good(),
-                  ExcMessage("Grid/Mesh file: cannot open the Gmsh file <"
-                             + file_name + ">."));
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(triangulation);
-      try
-        {
-          grid_in.read_msh(in);
-        }
-      catch (ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          AssertThrow(false,
-                      ExcMessage("Grid/Mesh file <" + file_name
-                                 + "> is not a readable Gmsh mesh of "
-                                 + std::to_string(dim)
-                                 + "D simplices: "
-                                 + Utilities::trim(info.str())));
-        }
-      catch (std::exception &e)
-        {
-          AssertThrow(false,
-                      ExcMessage("Grid/Mesh file <" + file_name
-                                 + "> is not a readable Gmsh mesh: "
-                                 + e.what()));
-        }
-      AssertThrow(triangulation.n_active_cells() > 0,
-                  ExcMessage("Grid/Mesh file <" + file_name
-                             + "> holds no cells."));
+      read_gmsh_file(file_name,
+                     "Grid/Mesh file",
+                     std::to_string(dim) + "D simplices",
+                     triangulation);
       AssertThrow(triangulation.all_reference_cells_are_simplex(),
                   ExcMessage("Grid/Mesh file <" + file_name
                              + "> must contain only triangles (2D) or "

@@ -602,7 +602,7 @@ namespace fsgmpm
 
     const unsigned int none = static_cast<unsigned int>(-1);
     std::vector<std::array<unsigned int, 2>> neighbours(n_nodes(),
-                                                        {none, none});
+                                                        {{none, none}});
     auto link = [&](const unsigned int a, const unsigned int b) {
       for (const unsigned int c : neighbours[a])
         if (c == b)

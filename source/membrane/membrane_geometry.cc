@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <fsgmpm/io/gmsh_reader.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_shape.h>
 #include <fsgmpm/scene/parameters.h>
@@ -395,36 +396,10 @@ namespace fsgmpm
 
     if (shape == "gmsh")
       {
-        std::ifstream in(mesh_file);
-        AssertThrow(in,
-                    ExcMessage("Membrane/Mesh file: cannot open <" + mesh_file
-                               + ">."));
-        GridIn<dim - 1, dim> grid_in;
-        grid_in.attach_triangulation(mesh);
-        try
-          {
-            grid_in.read_msh(in);
-          }
-        catch (ExceptionBase &e)
-          {
-            std::ostringstream info;
-            e.print_info(info);
-            AssertThrow(false,
-                        ExcMessage("Membrane/Mesh file <" + mesh_file
-                                   + "> is not a readable Gmsh mesh of "
-                                     "3-node triangles: "
-                                   + Utilities::trim(info.str())));
-          }
-        catch (std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage("Membrane/Mesh file <" + mesh_file
-                                   + "> is not a readable Gmsh mesh: "
-                                   + e.what()));
-          }
-        AssertThrow(mesh.n_active_cells() > 0,
-                    ExcMessage("Membrane/Mesh file <" + mesh_file
-                               + "> holds no triangles."));
+        read_gmsh_file(mesh_file,
+                       "Membrane/Mesh file",
+                       "3-node triangles",
+                       mesh);
         return;
       }
 

@@ -1,0 +1,28 @@
+#ifndef fsgmpm_io_gmsh_reader_h
+#define fsgmpm_io_gmsh_reader_h
+
+#include <deal.II/grid/tria.h>
+
+#include <string>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Read the Gmsh file @p file_name into @p triangulation (the background
+   * mesh, dim = spacedim, or a membrane surface, dim = spacedim - 1). Any
+   * failure (a missing or unreadable file, a file that is not a mesh, a
+   * mesh of other cells or dimension, no cells) throws an ExcMessage that
+   * names the parameter @p parameter (e.g. "Grid/Mesh file") and says that
+   * @p what (e.g. "2D simplices") was expected.
+   */
+  template <int dim, int spacedim>
+  void
+  read_gmsh_file(const std::string              &file_name,
+                 const std::string              &parameter,
+                 const std::string              &what,
+                 Triangulation<dim, spacedim> &triangulation);
+} // namespace fsgmpm
+
+#endif
