@@ -2,6 +2,7 @@
 
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/format.h>
 #include <fsgmpm/io/grid_output.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
@@ -42,14 +43,6 @@ namespace fsgmpm
       n_stages
     };
 
-    template <int dim>
-    std::string
-    to_string(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << std::setprecision(6) << "(" << p << ")";
-      return s.str();
-    }
   } // namespace
 
 
@@ -234,7 +227,7 @@ namespace fsgmpm
         membrane->cell[a] = locator.locate(membrane->position[a], 0);
         AssertThrow(membrane->cell[a] != BackgroundGrid<dim>::invalid,
                     ExcMessage("Membrane node " + std::to_string(a) + " at "
-                               + to_string(membrane->position[a])
+                               + "(" + format(membrane->position[a]) + ")"
                                + " lies outside the mesh; move or shrink "
                                  "the membrane (Membrane/Lowest point, "
                                  "Circumference and Enclosed area, or "
@@ -393,8 +386,9 @@ namespace fsgmpm
         << " s: " << what;
       if (particles.size() > 0)
         s << "; fastest material point (body " << particles.body_id[worst]
-          << ") at " << to_string(particles.position[worst]) << " with speed "
-          << vmax << " m/s";
+          << ") at "
+          << "(" + format(particles.position[worst]) + ")"
+          << " with speed " << vmax << " m/s";
       s << ". Reduce Simulation/Courant number or Simulation/Fixed time step, "
            "or check the material parameters.";
       diagnosis = s.str();
@@ -492,11 +486,12 @@ namespace fsgmpm
 
     double dt_stable = 0;
     timed(time_step_stage, [&] {
-      dt_stable = Stages::stable_time_step(*grid,
-                                           particles,
-                                           materials,
-                                           params.courant,
-                                           membrane ? &cell_stiffness : nullptr);
+      dt_stable
+        = Stages::stable_time_step(*grid,
+                                   particles,
+                                   materials,
+                                   params.courant,
+                                   membrane ? &cell_stiffness : nullptr);
       if (membrane)
         {
           // The nodes the membrane touches: the nodal bound with the
@@ -526,10 +521,10 @@ namespace fsgmpm
         if (dt > dt_stable / params.courant)
           {
             termination = "unstable";
-            diagnosis   = "Simulation/Fixed time step = " + std::to_string(dt)
+            diagnosis   = "Simulation/Fixed time step = " + format(dt)
                         + " s exceeds the explicit stability limit "
-                        + std::to_string(dt_stable / params.courant)
-                        + " s at step " + std::to_string(step)
+                        + format(dt_stable / params.courant) + " s at step "
+                        + std::to_string(step)
                         + "; use a smaller fixed time step or 0 (automatic).";
             return false;
           }
@@ -541,7 +536,7 @@ namespace fsgmpm
     if (!(dt > 0) || !std::isfinite(dt))
       {
         termination = "unstable";
-        diagnosis = "the time step became " + std::to_string(dt) + " s at step "
+        diagnosis   = "the time step became " + format(dt) + " s at step "
                     + std::to_string(step) + ".";
         return false;
       }

@@ -11,9 +11,9 @@ namespace fsgmpm
 {
   template <int dim, int spacedim>
   void
-  read_gmsh_file(const std::string              &file_name,
-                 const std::string              &parameter,
-                 const std::string              &what,
+  read_gmsh_file(const std::string            &file_name,
+                 const std::string            &parameter,
+                 const std::string            &what,
                  Triangulation<dim, spacedim> &triangulation)
   {
     std::ifstream in(file_name);
@@ -41,12 +41,10 @@ namespace fsgmpm
       {
         AssertThrow(false,
                     ExcMessage(parameter + " <" + file_name
-                               + "> is not a readable Gmsh mesh: "
-                               + e.what()));
+                               + "> is not a readable Gmsh mesh: " + e.what()));
       }
     AssertThrow(triangulation.n_active_cells() > 0,
-                ExcMessage(parameter + " <" + file_name
-                           + "> holds no cells."));
+                ExcMessage(parameter + " <" + file_name + "> holds no cells."));
   }
 
   template void

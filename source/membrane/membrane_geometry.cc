@@ -59,8 +59,7 @@ namespace fsgmpm
                              + " m cannot enclose " + std::to_string(A)
                              + " m^2: the area must lie in [1e-3, 1) L^2/(4 "
                                "pi) = ["
-                             + std::to_string(1e-3 * L * L / (4. * M_PI))
-                             + ", "
+                             + std::to_string(1e-3 * L * L / (4. * M_PI)) + ", "
                              + std::to_string(L * L / (4. * M_PI))
                              + ") (a circle holds the most; a smaller area "
                                "gives an ellipse flatter than b/a = "
@@ -229,7 +228,7 @@ namespace fsgmpm
     area          = prm.get_double("Enclosed area");
     const auto lp
       = parse_vector<2>(prm.get("Lowest point"), "Membrane/Lowest point");
-    bottom                     = Point<2>(lp);
+    bottom = Point<2>(lp);
     AssertThrow(std::abs(bottom[0]) <= 1e9 && std::abs(bottom[1]) <= 1e9,
                 ExcMessage("Membrane/Lowest point must lie within +-1e9 m; "
                            "got <"
@@ -345,7 +344,8 @@ namespace fsgmpm
         }
       AssertThrow(length / h <= 1e6,
                   ExcMessage("The membrane would have more than 1e6 elements "
-                             "of " + std::to_string(h)
+                             "of "
+                             + std::to_string(h)
                              + " m; increase Membrane/Element size or shorten "
                                "the membrane (Membrane/Circumference or "
                                "Polygon vertices)."));

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/io/format.h>
 #include <fsgmpm/materials/linear_elastic.h>
 #include <fsgmpm/materials/mohr_coulomb.h>
 #include <fsgmpm/materials/newtonian_fluid.h>
@@ -138,27 +139,9 @@ namespace fsgmpm
   {
     // Sanity bounds: far beyond any physical value, low enough that
     // energies and stresses stay finite.
-    constexpr double min_density = 1e-3; // kg/m^3; air: 1.2
-    constexpr double max_density = 1e5;  // kg/m^3; osmium: 22 590
-    constexpr double max_speed   = 1e5;  // m/s
-    constexpr double max_k0      = 10;   // lateral stress ratio
-
-    std::string
-    to_string(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
-    template <int dim>
-    std::string
-    to_string(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << p;
-      return s.str();
-    }
+    // (Density, 1e-3 to 1e5 kg/m^3, and K0, 0 to 10, are bounded by their
+    // Patterns.)
+    constexpr double max_speed = 1e5; // m/s
 
     template <int dim>
     Point<dim>
@@ -198,9 +181,9 @@ namespace fsgmpm
               e.print_info(info);
               AssertThrow(false,
                           ExcMessage(parameters + ": "
-                                     + Utilities::trim(info.str())
-                                     + " Got [" + to_string(lower) + "] - ["
-                                     + to_string(upper) + "]."));
+                                     + Utilities::trim(info.str()) + " Got ["
+                                     + format(lower) + "] - [" + format(upper)
+                                     + "]."));
             }
           body.shape->parameters = parameters;
         };
@@ -289,19 +272,12 @@ namespace fsgmpm
                         + std::to_string(body.particles_per_cell) + "."));
         }
         body.density = prm.get_double("Density");
-        AssertThrow(body.density >= min_density
-                      && body.density <= max_density,
-                    ExcMessage(body.path + "/Density must lie in ["
-                               + to_string(min_density) + ", "
-                               + to_string(max_density) + "] kg/m^3; got "
-                               + prm.get("Density") + "."));
         body.initial_velocity
           = parse_vector<dim>(prm.get("Initial velocity"),
                               body.path + "/Initial velocity");
         AssertThrow(body.initial_velocity.norm() <= max_speed,
-                    ExcMessage(body.path
-                               + "/Initial velocity must not exceed "
-                               + to_string(max_speed) + " m/s; got <"
+                    ExcMessage(body.path + "/Initial velocity must not exceed "
+                               + format(max_speed) + " m/s; got <"
                                + prm.get("Initial velocity") + ">."));
         const std::string initial = prm.get("Initial stress");
         body.initial_stress
@@ -311,10 +287,6 @@ namespace fsgmpm
                    ? BodyDescription<dim>::InitialStress::hydrostatic
                    : BodyDescription<dim>::InitialStress::none);
         body.k0                 = prm.get_double("K0");
-        AssertThrow(body.k0 <= max_k0,
-                    ExcMessage(body.path + "/K0 must lie in [0, "
-                               + to_string(max_k0) + "]; got "
-                               + prm.get("K0") + "."));
         const std::string model = prm.get("Material model");
         if (model == "linear elastic")
           body.material = LinearElastic::create(prm, body.density, body.path);

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/io/format.h>
 #include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/scene/body.h>
@@ -15,16 +16,6 @@ namespace fsgmpm
   {
     /// Largest coordinate of a box corner (m).
     constexpr double max_coordinate = 1e9;
-
-    /// A number in the shortest form (std::to_string gives 0.000000 for
-    /// 1e-301).
-    std::string
-    format(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
   } // namespace
 
 
@@ -429,8 +420,7 @@ namespace fsgmpm
                                     * std::max(std::abs(lower_corner[d]),
                                                std::abs(upper_corner[d])),
                         ExcMessage("Grid cells would be " + format(h)
-                                   + " m wide in direction "
-                                   + std::to_string(d)
+                                   + " m wide in direction " + std::to_string(d)
                                    + ": at least 1e-6 m and 1e-9 of the "
                                      "coordinates are needed; check Grid/"
                                      "Lower corner, Grid/Upper corner and "

@@ -228,29 +228,28 @@ namespace fsgmpm
       return outside;
     }
 
-#define FSGMPM_INSTANTIATE(dim)                                              \
-  template void         membrane_p2g<dim>(const BackgroundGrid<dim> &,       \
-                                  Membrane<dim> &,                   \
-                                  NodalFields<dim> &);               \
-  template double       membrane_time_step<dim>(                             \
-    const BackgroundGrid<dim> &,                                             \
-    const Membrane<dim> &,                                                   \
-    const std::vector<double> &,                                             \
-    const std::vector<unsigned int> &,                                       \
-    NodalFields<dim> &,                                                      \
-    const double);                                                           \
-  template void         membrane_g2p<dim>(const BackgroundGrid<dim> &,       \
-                                  const NodalFields<dim> &,          \
-                                  Membrane<dim> &);                  \
-  template void         membrane_remap<dim>(const BackgroundGrid<dim> &,     \
-                                    const Membrane<dim> &,           \
-                                    NodalFields<dim> &);             \
-  template double       membrane_positions<dim>(const BackgroundGrid<dim> &, \
-                                          const NodalFields<dim> &,    \
-                                          const double,                \
-                                          Membrane<dim> &);            \
-  template unsigned int membrane_relocate<dim>(const BackgroundGrid<dim> &,  \
-                                               const double,                 \
+#define FSGMPM_INSTANTIATE(dim)                                                    \
+  template void         membrane_p2g<dim>(const BackgroundGrid<dim> &,             \
+                                  Membrane<dim> &,                         \
+                                  NodalFields<dim> &);                     \
+  template double       membrane_time_step<dim>(const BackgroundGrid<dim> &,       \
+                                          const Membrane<dim> &,             \
+                                          const std::vector<double> &,       \
+                                          const std::vector<unsigned int> &, \
+                                          NodalFields<dim> &,                \
+                                          const double);                     \
+  template void         membrane_g2p<dim>(const BackgroundGrid<dim> &,             \
+                                  const NodalFields<dim> &,                \
+                                  Membrane<dim> &);                        \
+  template void         membrane_remap<dim>(const BackgroundGrid<dim> &,           \
+                                    const Membrane<dim> &,                 \
+                                    NodalFields<dim> &);                   \
+  template double       membrane_positions<dim>(const BackgroundGrid<dim> &,       \
+                                          const NodalFields<dim> &,          \
+                                          const double,                      \
+                                          Membrane<dim> &);                  \
+  template unsigned int membrane_relocate<dim>(const BackgroundGrid<dim> &,        \
+                                               const double,                       \
                                                Membrane<dim> &);
     FSGMPM_INSTANTIATE(2)
     FSGMPM_INSTANTIATE(3)

@@ -13,7 +13,7 @@ namespace fsgmpm
                      const ParticleStore<dim>                     &particles,
                      const std::vector<std::unique_ptr<Material>> &materials,
                      const double                                  courant,
-                     std::vector<double>                          *cell_stiffness)
+                     std::vector<double> *cell_stiffness)
     {
       const auto         &cells = particles.occupied_cells;
       std::vector<double> cell_dt(cells.size());
@@ -43,8 +43,8 @@ namespace fsgmpm
                   // same signal speed, for the nodal bound.
                   stiffness += particles.volume[p] * rho * s * s;
                 }
-              cell_dt[i] = (speed > 0) ? h / speed
-                                       : std::numeric_limits<double>::max();
+              cell_dt[i]
+                = (speed > 0) ? h / speed : std::numeric_limits<double>::max();
               if (cell_stiffness != nullptr)
                 (*cell_stiffness)[c] = stiffness;
             }

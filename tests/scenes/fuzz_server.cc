@@ -96,7 +96,7 @@ main()
             fsgmpm_main(static_cast<int>(argv.size()) - 1, argv.data()));
         }
 
-      const auto start = std::chrono::steady_clock::now();
+      const auto start  = std::chrono::steady_clock::now();
       int        status = 0;
       bool       killed = false;
       while (waitpid(pid, &status, WNOHANG) == 0)

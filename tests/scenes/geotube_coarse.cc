@@ -19,13 +19,13 @@
 // -0.0030); mean tension within 2% of the analytic value for the measured
 // area and length (measured -0.2%) and within 4% of the nominal one
 // (measured -1.0%); top and bottom pressure of the line fit within 3% of
-// the analytic bottom pressure (measured -0.4% and +1.1% of it). The max/mean tension check (1%) only guards the slip projection,
-// which makes the tension uniform by construction. No point lost and at
-// most 0.5% of the points outside the membrane.
-// The same for the 3D variant (prm/geotube_A5.56_3d.prm, 8-10 s), measured
-// H/W -0.0050 (own) and -0.0067 (nominal), tension +0.8% and 0.0%, p_top
-// -1.3% and p_bottom -1.6% of p_bottom (with the damped time-step bound): H/W within 0.012 and 0.015, tension
-// within 3% and 3%, pressures within 4%.
+// the analytic bottom pressure (measured -0.4% and +1.1% of it). The max/mean
+// tension check (1%) only guards the slip projection, which makes the tension
+// uniform by construction. No point lost and at most 0.5% of the points outside
+// the membrane. The same for the 3D variant (prm/geotube_A5.56_3d.prm, 8-10 s),
+// measured H/W -0.0050 (own) and -0.0067 (nominal), tension +0.8% and 0.0%,
+// p_top -1.3% and p_bottom -1.6% of p_bottom (with the damped time-step bound):
+// H/W within 0.012 and 0.015, tension within 3% and 3%, pressures within 4%.
 // Measured values: see the [ measured ] lines and doc/membrane_validation.md.
 // Label validation (geotube_coarse_eq30), not yet met: convergence by
 // Eq. (30) at 1e-3 within 30 s of relaxation.

@@ -102,22 +102,23 @@ TEST(GranularCollapse, ComesToRestWithTheRunoutOfLube)
       double       V0 = 0;
       for (unsigned int p = 0; p < P.size(); ++p)
         V0 += P.volume[p];
-      const unsigned int n_points      = P.size();
+      const unsigned int n_points = P.size();
       const auto [measured, lube] = run(a, sim);
       ASSERT_EQ(sim.get_termination(), "at_rest") << sim.get_diagnosis();
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u);
       ASSERT_EQ(P.size(), n_points);
       // Volume of the points and area under the deposit's profile.
-      double                        V = 0, J_max = 0;
-      std::map<int, double>         top; // highest point per 1 cm column
-      const double                  dx      = 0.01;
-      const double                  spacing = 0.01 / 2; // 4 points per cell
+      double                V = 0, J_max = 0;
+      std::map<int, double> top; // highest point per 1 cm column
+      const double          dx      = 0.01;
+      const double          spacing = 0.01 / 2; // 4 points per cell
       for (unsigned int p = 0; p < P.size(); ++p)
         {
           V += P.volume[p];
           J_max = std::max(J_max, P.volume[p] / P.reference_volume[p]);
-          const int column = static_cast<int>(std::floor(P.position[p][0] / dx));
-          const auto it    = top.find(column);
+          const int column
+            = static_cast<int>(std::floor(P.position[p][0] / dx));
+          const auto it = top.find(column);
           if (it == top.end() || it->second < P.position[p][1])
             top[column] = P.position[p][1];
         }

@@ -46,25 +46,25 @@ namespace
     const double v0  = 1e-3 * c_s;
     auto         prm = test_tools::make_parameters(
       "subsection Simulation\n"
-      "  set End time = "
+              "  set End time = "
       + std::to_string(end_time)
       + "\n"
-        "  set Gravity = 0, 0\n"
-        "end\n"
-        "subsection Grid\n"
-        "  set Upper corner = 1, 1\n"
-        "  set Subdivisions = 16, 16\n"
-        "  set Boundary conditions = 0: roller, 1: roller, 2: roller, "
-        "3: roller\n"
-        "end\n"
-        "subsection Bodies\n subsection Body 0\n"
-        "  set Box lower corner = 0, 0\n  set Box upper corner = 1, 1\n"
-        "  set Density = 1000\n"
-        "  set Volumetric smoothing = "
+                "  set Gravity = 0, 0\n"
+                "end\n"
+                "subsection Grid\n"
+                "  set Upper corner = 1, 1\n"
+                "  set Subdivisions = 16, 16\n"
+                "  set Boundary conditions = 0: roller, 1: roller, 2: roller, "
+                "3: roller\n"
+                "end\n"
+                "subsection Bodies\n subsection Body 0\n"
+                "  set Box lower corner = 0, 0\n  set Box upper corner = 1, 1\n"
+                "  set Density = 1000\n"
+                "  set Volumetric smoothing = "
       + smoothing
       + "\n"
-        "  subsection Linear elastic\n   set Young's modulus = 1e6\n"
-        "   set Poisson's ratio = 0.4999\n  end\n end\nend\n");
+                "  subsection Linear elastic\n   set Young's modulus = 1e6\n"
+                "   set Poisson's ratio = 0.4999\n  end\n end\nend\n");
     Simulator<2> sim(*prm);
     auto        &particles = sim.get_particles();
     const double k         = M_PI / L;
@@ -73,9 +73,9 @@ namespace
     double                    norm = 0;
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
-        const auto &x = particles.position[p];
-        shape[p][0]   = std::sin(k * x[0]) * std::cos(k * x[1]);
-        shape[p][1]   = -std::cos(k * x[0]) * std::sin(k * x[1]);
+        const auto &x         = particles.position[p];
+        shape[p][0]           = std::sin(k * x[0]) * std::cos(k * x[1]);
+        shape[p][1]           = -std::cos(k * x[0]) * std::sin(k * x[1]);
         particles.velocity[p] = v0 * shape[p];
         norm += particles.mass[p] * shape[p] * shape[p];
       }
@@ -115,15 +115,15 @@ namespace
 
 TEST(IncompressibleVortex, NmdAnpCuresLocking)
 {
-  const double G   = E / (2 * (1 + nu));
-  const double T   = std::sqrt(2.) * L / std::sqrt(G / rho);
-  const Result r   = run("NMD+ANP", 1.1 * T);
-  const Result rn  = run("none", 1.1 * T);
+  const double G  = E / (2 * (1 + nu));
+  const double T  = std::sqrt(2.) * L / std::sqrt(G / rho);
+  const Result r  = run("NMD+ANP", 1.1 * T);
+  const Result rn = run("none", 1.1 * T);
   std::cout << "[ measured ] vortex mode, nu = 0.4999, analytic T = " << T
             << " s; NMD+ANP: period " << r.period << " s ("
             << 100 * (r.period / T - 1) << " %), " << r.crossings
-            << " crossings, energy ratio^1/2 " << r.amplitude << ", "
-            << r.steps << " steps; none: period " << rn.period << " s ("
+            << " crossings, energy ratio^1/2 " << r.amplitude << ", " << r.steps
+            << " steps; none: period " << rn.period << " s ("
             << 100 * (rn.period / T - 1) << " %), " << rn.crossings
             << " crossings, energy ratio^1/2 " << rn.amplitude << std::endl;
   ASSERT_GE(r.crossings, 2u);

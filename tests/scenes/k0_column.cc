@@ -89,7 +89,7 @@ TEST(K0Column, GravityRampYieldsToTheActiveRatio)
 {
   const double H = 1.0, h = 0.05, rho = 1500, g = 9.81;
   const double sphi = 0.5, K_a = (1 - sphi) / (1 + sphi);
-  auto         prm  = test_tools::make_parameters(R"(
+  auto         prm = test_tools::make_parameters(R"(
 subsection Simulation
   set End time = 1.2
   set Gravity ramp time = 0.5
@@ -143,9 +143,9 @@ end
   std::cout << std::endl;
   for (const auto &[row, l] : layers)
     {
-      worst_ratio = std::max(worst_ratio, std::abs(l[0] / l[1] / K_a - 1));
-      worst_vertical
-        = std::max(worst_vertical, std::abs(l[1] - l[2]) / l[3] / (rho * g * H));
+      worst_ratio    = std::max(worst_ratio, std::abs(l[0] / l[1] / K_a - 1));
+      worst_vertical = std::max(worst_vertical,
+                                std::abs(l[1] - l[2]) / l[3] / (rho * g * H));
     }
   std::cout << "[ measured ] K0 column from zero stress (gravity ramp): "
             << layers.size() << " layers, " << sim.get_step()

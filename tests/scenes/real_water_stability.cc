@@ -19,12 +19,35 @@
 
 #include "test_utilities.h"
 
+#include <limits>
+
 using namespace fsgmpm;
 
 namespace
 {
   // A 0.08 x 0.5 m column of real water in a 0.08 x 0.6 m box (2 cm cells),
   // hydrostatic, 3000 steps.
+  constexpr double H = 0.5, W = 0.08, rho = 1000, g = 9.81, h = 0.02;
+
+  // Largest |p - rho g (H - y)| / (rho g H) over the points away from the
+  // top and bottom cell rows; NaN if a position or stress is not finite.
+  double
+  max_pressure_error(const ParticleStore<2> &ps)
+  {
+    double e = 0;
+    for (unsigned int p = 0; p < ps.size(); ++p)
+      {
+        const double y = ps.position[p][1];
+        if (!std::isfinite(y) || !std::isfinite(trace(ps.stress[p])))
+          return std::numeric_limits<double>::quiet_NaN();
+        if (y > h && y < H - h)
+          e = std::max(e,
+                       std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
+                         / (rho * g * H));
+      }
+    return e;
+  }
+
   const char *column_scene = R"(
 subsection Simulation
   set End time = 1
@@ -48,7 +71,6 @@ end
 
 TEST(RealWaterStiffness, HydrostaticColumnStaysAtRest)
 {
-  const double H = 0.5, rho = 1000, g = 9.81, h = 0.02;
   auto         prm = test_tools::make_parameters(column_scene);
   Simulator<2> sim(*prm);
   double       max_ke = 0;
@@ -56,18 +78,8 @@ TEST(RealWaterStiffness, HydrostaticColumnStaysAtRest)
     max_ke = std::max(max_ke, sim.get_monitors().kinetic_energy);
   ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
   EXPECT_EQ(sim.get_step(), 3000u);
-  const auto &ps        = sim.get_particles();
-  double      max_error = 0;
-  for (unsigned int p = 0; p < ps.size(); ++p)
-    {
-      const double y = ps.position[p][1];
-      ASSERT_TRUE(std::isfinite(y) && std::isfinite(trace(ps.stress[p])));
-      if (y > h && y < H - h)
-        max_error
-          = std::max(max_error,
-                     std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
-                       / (rho * g * H));
-    }
+  const double max_error = max_pressure_error(sim.get_particles());
+  ASSERT_TRUE(std::isfinite(max_error));
   const double energy_scale = rho * g * H * (0.08 * H);
   std::cout << "[ measured ] real K_f: " << sim.get_step()
             << " steps, dt = " << sim.get_dt()
@@ -81,7 +93,7 @@ TEST(RealWaterStiffness, HydrostaticColumnStaysAtRest)
 
 TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
 {
-  const double H = 0.5, W = 0.08, rho = 1000, g = 9.81, h = 0.02, v0 = 1e-3;
+  const double v0  = 1e-3;
   auto         prm = test_tools::make_parameters(column_scene);
   Simulator<2> sim(*prm);
   auto        &ps = sim.get_particles();
@@ -93,46 +105,24 @@ TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
   const double ke0      = m0.kinetic_energy;
   const double balance0 = m0.kinetic_energy + m0.strain_energy;
   double       max_ke = 0, max_imbalance = 0, max_error_run = 0;
-  // Largest interior pressure error / rho g H now.
-  auto pressure_error = [&]() {
-    double e = 0;
-    for (unsigned int p = 0; p < ps.size(); ++p)
-      {
-        const double y = ps.position[p][1];
-        if (y > h && y < H - h)
-          e = std::max(e,
-                       std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
-                         / (rho * g * H));
-      }
-    return e;
-  };
   while (sim.advance())
     {
       if (sim.get_step() % 10 == 0)
-        max_error_run = std::max(max_error_run, pressure_error());
+        max_error_run = std::max(max_error_run, max_pressure_error(ps));
       const auto &m = sim.get_monitors();
       max_ke        = std::max(max_ke, m.kinetic_energy);
-      max_imbalance =
-        std::max(max_imbalance,
-                 std::abs(m.kinetic_energy + m.strain_energy - m.external_work
-                          - balance0));
+      max_imbalance = std::max(max_imbalance,
+                               std::abs(m.kinetic_energy + m.strain_energy
+                                        - m.external_work - balance0));
     }
   ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
   EXPECT_EQ(sim.get_step(), 3000u);
-  double max_error = 0;
-  for (unsigned int p = 0; p < ps.size(); ++p)
-    {
-      const double y = ps.position[p][1];
-      ASSERT_TRUE(std::isfinite(y) && std::isfinite(trace(ps.stress[p])));
-      if (y > h && y < H - h)
-        max_error
-          = std::max(max_error,
-                     std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
-                       / (rho * g * H));
-    }
+  const double max_error = max_pressure_error(ps);
+  ASSERT_TRUE(std::isfinite(max_error));
   std::cout << "[ measured ] perturbed real-water column: perturbation "
-            << "energy " << ke0 << " J/m, max kinetic energy / it = "
-            << max_ke / ke0 << ", final " << sim.get_monitors().kinetic_energy / ke0
+            << "energy " << ke0
+            << " J/m, max kinetic energy / it = " << max_ke / ke0 << ", final "
+            << sim.get_monitors().kinetic_energy / ke0
             << ", max |energy balance drift| / it = " << max_imbalance / ke0
             << ", final max pressure error / rho g H = " << 100 * max_error
             << " %, largest during the run " << 100 * max_error_run << " %"

@@ -58,8 +58,8 @@ namespace
     for (unsigned int p = 0; p < ps.size(); ++p)
       {
         for (unsigned int d = 0; d < dim; ++d)
-          if (!std::isfinite(ps.position[p][d]) ||
-              !std::isfinite(ps.velocity[p][d]))
+          if (!std::isfinite(ps.position[p][d])
+              || !std::isfinite(ps.velocity[p][d]))
             return false;
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
@@ -71,14 +71,13 @@ namespace
     if (const auto *m = sim.get_membrane())
       for (unsigned int a = 0; a < m->n_nodes(); ++a)
         for (unsigned int d = 0; d < dim; ++d)
-          if (!std::isfinite(m->position[a][d]) ||
-              !std::isfinite(m->velocity[a][d]))
+          if (!std::isfinite(m->position[a][d])
+              || !std::isfinite(m->velocity[a][d]))
             return false;
     const auto &mon = sim.get_monitors();
-    return std::isfinite(mon.kinetic_energy) &&
-           std::isfinite(mon.strain_energy) &&
-           std::isfinite(mon.external_work) &&
-           std::isfinite(mon.dissipated_energy);
+    return std::isfinite(mon.kinetic_energy) && std::isfinite(mon.strain_energy)
+           && std::isfinite(mon.external_work)
+           && std::isfinite(mon.dissipated_energy);
   }
 
   // Advance to the end and record the energy balance after every step.
@@ -88,29 +87,29 @@ namespace
       const std::string &name,
       const double       energy_bound = kEnergyBound)
   {
-    Outcome     out;
-    const auto &m0 = sim.get_monitors();
-    const double E0 = m0.kinetic_energy + m0.strain_energy;
+    Outcome      out;
+    const auto  &m0    = sim.get_monitors();
+    const double E0    = m0.kinetic_energy + m0.strain_energy;
     double       scale = E0 + std::abs(m0.external_work);
     while (sim.advance())
       {
-        const auto &m = sim.get_monitors();
-        scale         = std::max(scale, E0 + std::abs(m.external_work));
-        const double created = m.kinetic_energy + m.strain_energy -
-                               (E0 + m.external_work - m.dissipated_energy);
+        const auto &m        = sim.get_monitors();
+        scale                = std::max(scale, E0 + std::abs(m.external_work));
+        const double created = m.kinetic_energy + m.strain_energy
+                               - (E0 + m.external_work - m.dissipated_energy);
         if (scale > 0)
           {
             out.created_ratio = std::max(out.created_ratio, created / scale);
-            out.relative_drift =
-              std::max(out.relative_drift, std::abs(created) / scale);
+            out.relative_drift
+              = std::max(out.relative_drift, std::abs(created) / scale);
           }
       }
     out.termination = sim.get_termination();
     out.diagnosis   = sim.get_diagnosis();
     out.steps       = sim.get_step();
     out.dt_min      = sim.get_dt();
-    std::cout << "[ measured ] " << name << ": " << out.termination
-              << " after " << out.steps << " steps (dt " << out.dt_min
+    std::cout << "[ measured ] " << name << ": " << out.termination << " after "
+              << out.steps << " steps (dt " << out.dt_min
               << " s), max created energy / energy put in = "
               << out.created_ratio << std::endl;
     EXPECT_TRUE(state_is_finite(sim)) << name << ": non-finite state";
@@ -121,8 +120,8 @@ namespace
       }
     else
       {
-        EXPECT_TRUE(out.termination == "end_time" ||
-                    out.termination == "at_rest")
+        EXPECT_TRUE(out.termination == "end_time"
+                    || out.termination == "at_rest")
           << name << ": " << out.termination << " " << out.diagnosis;
         EXPECT_LT(out.created_ratio, energy_bound) << name;
       }
@@ -149,7 +148,8 @@ namespace
     return R"(
 subsection Simulation
   set End time = 1
-)" + simulation +
+)" + simulation
+           +
            R"(
 end
 subsection Grid
@@ -185,31 +185,31 @@ end
     return R"(
 subsection Simulation
   set End time = 1
-  set Gravity = )" +
-           gravity + R"(
-  set Maximum number of steps = )" +
-           std::to_string(max_steps) + R"(
+  set Gravity = )"
+           + gravity + R"(
+  set Maximum number of steps = )"
+           + std::to_string(max_steps) + R"(
 end
 subsection Grid
   set Upper corner = 1, 0.5
   set Subdivisions = 40, 20
-  set Boundary conditions = )" +
-           walls + R"(
+  set Boundary conditions = )"
+           + walls + R"(
 end
 subsection Bodies
   subsection Body 0
     set Material model = linear elastic
     set Initial stress = none
-    set Box lower corner = )" +
-           lower + R"(
-    set Box upper corner = )" +
-           upper + R"(
-    set Initial velocity = )" +
-           velocity + R"(
+    set Box lower corner = )"
+           + lower + R"(
+    set Box upper corner = )"
+           + upper + R"(
+    set Initial velocity = )"
+           + velocity + R"(
     set Density = 1000
     subsection Linear elastic
-      set Young's modulus = )" +
-           E + R"(
+      set Young's modulus = )"
+           + E + R"(
       set Poisson's ratio = 0.3
     end
   end
@@ -226,24 +226,26 @@ end
 // above the bound at C = 1 is refused with the diagnosis before it runs.
 TEST(StabilityExtremes, RealWaterFreeSurface)
 {
-  const auto at_limit =
-    run<2>(water_column("set Bulk modulus = 2.13e9",
-                        "set Courant number = 1\n"
-                        "  set Maximum number of steps = 1500"),
-           "real water, free surface, C = 1");
+  const auto at_limit
+    = run<2>(water_column("set Bulk modulus = 2.13e9",
+                          "set Courant number = 1\n"
+                          "  set Maximum number of steps = 1500"),
+             "real water, free surface, C = 1");
   EXPECT_EQ(at_limit.termination, "end_time");
 
   // The bound at C = 1 (dt at C = 0.5 doubled), exceeded by 5%.
-  auto prm = test_tools::make_parameters(water_column(
-    "set Bulk modulus = 2.13e9", "set Maximum number of steps = 1"));
+  auto prm = test_tools::make_parameters(
+    water_column("set Bulk modulus = 2.13e9",
+                 "set Maximum number of steps = 1"));
   Simulator<2> probe(*prm);
   probe.advance();
   const double dt_bound = 2 * probe.get_dt();
-  const auto   above    = run<2>(
-    water_column("set Bulk modulus = 2.13e9",
-                 "set Fixed time step = " + std::to_string(1.05 * dt_bound) +
-                   "\n  set Maximum number of steps = 200"),
-    "real water, fixed dt 1.05 x bound");
+  const auto   above
+    = run<2>(water_column("set Bulk modulus = 2.13e9",
+                          "set Fixed time step = "
+                            + std::to_string(1.05 * dt_bound)
+                            + "\n  set Maximum number of steps = 200"),
+             "real water, fixed dt 1.05 x bound");
   EXPECT_EQ(above.termination, "unstable");
   EXPECT_NE(above.diagnosis.find("Fixed time step"), std::string::npos);
 }
@@ -258,8 +260,8 @@ TEST(StabilityExtremes, LonePointAndNearEmptyNode)
 {
   for (const bool attached : {true, false})
     {
-      auto prm = test_tools::make_parameters(
-        elastic_block("2: fixed", "0, 0", 4000));
+      auto prm
+        = test_tools::make_parameters(elastic_block("2: fixed", "0, 0", 4000));
       apply_courant_override(*prm);
       Simulator<2> sim(*prm);
       auto        &ps = sim.get_particles();
@@ -268,17 +270,17 @@ TEST(StabilityExtremes, LonePointAndNearEmptyNode)
       // 1e-6 h above it.
       unsigned int top = 0;
       for (unsigned int p = 0; p < ps.size(); ++p)
-        if (ps.position[p][0] + ps.position[p][1] >
-            ps.position[top][0] + ps.position[top][1])
+        if (ps.position[p][0] + ps.position[p][1]
+            > ps.position[top][0] + ps.position[top][1])
           top = p;
-      const double h = 0.025;
-      ps.position[top][1] =
-        (attached ? 0.15 : 0.4) + 1e-6 * h;
+      const double h      = 0.025;
+      ps.position[top][1] = (attached ? 0.15 : 0.4) + 1e-6 * h;
       Stages::relocate(sim.get_grid(), ps);
       sim.reinitialize_state();
-      const auto out =
-        run(sim, attached ? "point 1e-6 h across a face above the block"
-                          : "lone point 1e-6 h across a face, in the air");
+      const auto out
+        = run(sim,
+              attached ? "point 1e-6 h across a face above the block"
+                       : "lone point 1e-6 h across a face, in the air");
       EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
     }
 }
@@ -291,11 +293,11 @@ TEST(StabilityExtremes, Viscosity)
 {
   for (const double mu : {0., 1., 1e2, 1e4})
     {
-      const auto out = run<2>(
-        water_column("set Bulk modulus = 2.5e6\n      set Viscosity = " +
-                       std::to_string(mu),
-                     "set Maximum number of steps = 5000"),
-        "viscosity " + std::to_string(mu) + " Pa s");
+      const auto out
+        = run<2>(water_column("set Bulk modulus = 2.5e6\n      set Viscosity = "
+                                + std::to_string(mu),
+                              "set Maximum number of steps = 5000"),
+                 "viscosity " + std::to_string(mu) + " Pa s");
       EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
     }
 }
@@ -311,7 +313,8 @@ TEST(StabilityExtremes, MembraneStiffnessAndMass)
     for (const double EA : {1e3, 5e9})
       for (const double rhoA : {0.01, 10.})
         {
-          auto prm = test_tools::make_parameters_from_scene("geotube_A5.56.prm");
+          auto prm
+            = test_tools::make_parameters_from_scene("geotube_A5.56.prm");
           prm->enter_subsection("Simulation");
           prm->set("Maximum number of steps", "2000");
           prm->leave_subsection();
@@ -337,12 +340,12 @@ TEST(StabilityExtremes, MembraneStiffnessAndMass)
           // energy is not in kinetic_energy: the balance holds to 10%
           // (measured 6.6% at 5 GN/m, 0.01 kg/m^2).
           Simulator<2> sim(*prm);
-          const auto   out = run(sim,
-                               "membrane EA " + std::to_string(EA) +
-                                 " N/m, " + std::to_string(rhoA) +
-                                 " kg/m2, mass scaling " +
-                                 (scaling ? "on" : "off"),
-                               scaling ? 0.1 : kEnergyBound);
+          const auto   out
+            = run(sim,
+                  "membrane EA " + std::to_string(EA) + " N/m, "
+                    + std::to_string(rhoA) + " kg/m2, mass scaling "
+                    + (scaling ? "on" : "off"),
+                  scaling ? 0.1 : kEnergyBound);
           EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
         }
 }
@@ -375,7 +378,7 @@ subsection Bodies
   end
 end
 )",
-                            "sliver triangles (5 deg), real water");
+                          "sliver triangles (5 deg), real water");
   EXPECT_EQ(tri.termination, "end_time") << tri.diagnosis;
   const auto tet = run<3>(R"(
 subsection Simulation
@@ -417,7 +420,7 @@ TEST(StabilityExtremes, ImpactAt20MetresPerSecond)
   for (const std::string wall : {"fixed", "roller", "friction 0.3"})
     {
       const bool friction = (wall == "friction 0.3");
-      const auto out = run<2>(elastic_block("0: " + wall,
+      const auto out      = run<2>(elastic_block("0: " + wall,
                                             "-20, 0",
                                             1000,
                                             "0, 0",
@@ -461,7 +464,7 @@ TEST(StabilityExtremes, ContrastMillionToOne)
       set Young's modulus = 1e3
       set Poisson's ratio = 0.3
     end)";
-      const auto out = run<2>(std::string(R"(
+      const auto        out   = run<2>(std::string(R"(
 subsection Simulation
   set End time = 1
   set Maximum number of steps = 20000
@@ -475,18 +478,18 @@ subsection Bodies
   set Number of bodies = 2
   subsection Body 0
     set Box lower corner = 0.15, 0
-    set Box upper corner = 0.35, 0.1)") +
-                                (heavy_on_top ? light : heavy) + R"(
+    set Box upper corner = 0.35, 0.1)")
+                                + (heavy_on_top ? light : heavy) + R"(
   end
   subsection Body 1
     set Box lower corner = 0.15, 0.1
-    set Box upper corner = 0.35, 0.2)" +
-                                (heavy_on_top ? heavy : light) + R"(
+    set Box upper corner = 0.35, 0.2)"
+                                + (heavy_on_top ? heavy : light) + R"(
   end
 end
 )",
                               heavy_on_top ? "heavy stiff on light soft"
-                                           : "light soft on heavy stiff");
+                                                    : "light soft on heavy stiff");
       if (!heavy_on_top)
         {
           EXPECT_EQ(out.termination, "end_time") << out.diagnosis;
@@ -505,8 +508,9 @@ TEST(StabilityExtremes, FiftyPeriodsEnergyDrift)
   const double T = 4 * L / c, v0 = 1e-4 * c;
   auto         prm = test_tools::make_parameters(R"(
 subsection Simulation
-  set End time = )" + std::to_string(50 * T) +
-                                           R"(
+  set End time = )" + std::to_string(50 * T)
+                                         +
+                                         R"(
   set Gravity = 0, 0
 end
 subsection Grid

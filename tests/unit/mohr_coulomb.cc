@@ -323,7 +323,7 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
   auto         uniform = [&](const double a, const double b) {
     return a + (b - a) * (generator() / 4294967296.);
   };
-  unsigned int counts[5] = {0, 0, 0, 0, 0};
+  unsigned int counts[5]      = {0, 0, 0, 0, 0};
   double       worst_distance = 0, worst_surface = 0, worst_sample = 1e300;
   unsigned int n_trials = 0;
   for (const auto &[E_, nu_, phi_, c_] :
@@ -352,30 +352,29 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
           ++n_trials;
           const auto      eig = eigenvectors(trial);
           const Principal t   = {{eig[0].first, eig[1].first, eig[2].first}};
-          const double    size =
-            std::abs(t[0]) + std::abs(t[2]) + brute.k; // stress scale
+          const double    size
+            = std::abs(t[0]) + std::abs(t[2]) + brute.k; // stress scale
           const auto [p, active] = brute.project(t, size);
           // Brute force in principal space, rebuilt on the trial's axes.
           SymmetricTensor<2, 3> expected;
           for (unsigned int i = 0; i < 3; ++i)
-            expected +=
-              p[i] * symmetrize(outer_product(eig[i].second, eig[i].second));
+            expected
+              += p[i] * symmetrize(outer_product(eig[i].second, eig[i].second));
           const bool elastic = brute.f_max(t) <= 0;
           if (elastic)
             expected = trial;
           const double distance = (s - expected).norm() / size;
           worst_distance        = std::max(worst_distance, distance);
-          EXPECT_LT(distance, 1e-9)
-            << "trial " << trial << ", returned " << s << ", brute force "
-            << expected;
+          EXPECT_LT(distance, 1e-9) << "trial " << trial << ", returned " << s
+                                    << ", brute force " << expected;
           // Kind of return against the brute force's active set.
-          const MohrCoulomb::Return expected_kind =
-            elastic       ? MohrCoulomb::Return::elastic :
-            active == 1   ? MohrCoulomb::Return::plane :
-            active == 6   ? MohrCoulomb::Return::apex :
-            p[0] - p[1] < p[1] - p[2] ?
-                            MohrCoulomb::Return::edge_compression :
-                            MohrCoulomb::Return::edge_extension;
+          const MohrCoulomb::Return expected_kind
+            = elastic       ? MohrCoulomb::Return::elastic
+              : active == 1 ? MohrCoulomb::Return::plane
+              : active == 6 ? MohrCoulomb::Return::apex
+              : p[0] - p[1] < p[1] - p[2]
+                ? MohrCoulomb::Return::edge_compression
+                : MohrCoulomb::Return::edge_extension;
           EXPECT_EQ(static_cast<int>(kind), static_cast<int>(expected_kind))
             << "trial " << trial;
           if (elastic)
@@ -386,8 +385,8 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
           Principal returned;
           for (unsigned int i = 0; i < 3; ++i)
             returned[i] = eig[i].second * (s * eig[i].second);
-          worst_surface =
-            std::max(worst_surface, std::abs(brute.f_max(returned)) / size);
+          worst_surface
+            = std::max(worst_surface, std::abs(brute.f_max(returned)) / size);
           EXPECT_NEAR(brute.f_max(returned), 0, 1e-10 * size);
           // ... and no sampled surface point near it is closer: points
           // around it (scales from 1e-6 to 1 of the distance) moved onto
@@ -396,10 +395,10 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
           const double r  = std::sqrt(brute.energy(returned, t) * E_);
           for (unsigned int k = 0; k < 64; ++k)
             {
-              const double h = r * std::pow(10., -uniform(0, 6));
-              Principal    q = {{returned[0] + h * uniform(-1, 1),
-                                 returned[1] + h * uniform(-1, 1),
-                                 returned[2] + h * uniform(-1, 1)}};
+              const double h     = r * std::pow(10., -uniform(0, 6));
+              Principal    q     = {{returned[0] + h * uniform(-1, 1),
+                                     returned[1] + h * uniform(-1, 1),
+                                     returned[2] + h * uniform(-1, 1)}};
               const double shift = -brute.f_max(q) / (2 * brute.sphi);
               for (auto &x : q)
                 x += shift;

@@ -19,9 +19,9 @@ namespace fsgmpm
    */
   template <int dim, int spacedim>
   void
-  read_gmsh_file(const std::string              &file_name,
-                 const std::string              &parameter,
-                 const std::string              &what,
+  read_gmsh_file(const std::string            &file_name,
+                 const std::string            &parameter,
+                 const std::string            &what,
                  Triangulation<dim, spacedim> &triangulation);
 } // namespace fsgmpm
 
