@@ -133,7 +133,8 @@ namespace fsgmpm
 
     scene_monitors = std::make_unique<SceneMonitors<dim>>(prm,
                                                           grid->lower_corner,
-                                                          cell_size);
+                                                          cell_size,
+                                                          bodies.size());
     AssertThrow(!scene_monitors->needs_membrane() || membrane,
                 ExcMessage("Monitors/Scene monitors names a membrane column "
                            "(height, width, contact_width, ...), but "
@@ -247,6 +248,10 @@ namespace fsgmpm
   void
   Simulator<dim>::setup_bodies()
   {
+    // Bodies fill in order: a body leaves out the regions of those before
+    // it, so a water tank listed after a bag surrounds it without a second
+    // mass inside.
+    std::vector<const BodyShape<dim> *> taken;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         BodyDescription<dim> &body  = bodies[b];
@@ -263,20 +268,33 @@ namespace fsgmpm
                   body.initial_velocity,
                   b,
                   b,
-                  particles);
+                  particles,
+                  taken);
+        taken.push_back(body.shape.get());
         using InitialStress = typename BodyDescription<dim>::InitialStress;
         if (body.initial_stress != InitialStress::none)
           {
-            // sigma_yy = rho g_y (y_top - y): compression below the top.
+            // sigma_yy = rho g_y (y_top - y): compression below the top. A
+            // fluid at rest has one level (the highest point of the body);
+            // soil is loaded by what lies above each point, so its depth is
+            // taken below its own surface there (a sloped or curved top).
             double y_top = -std::numeric_limits<double>::max();
             for (const auto &p : body.shape->outline_points())
               y_top = std::max(y_top, p[1]);
-            const double k
-              = body.initial_stress == InitialStress::geostatic ? body.k0 : 1.;
+            const bool geostatic
+              = body.initial_stress == InitialStress::geostatic;
+            const double k    = geostatic ? body.k0 : 1.;
+            const double step = 0.25 * grid->max_altitude_global;
             for (unsigned int p = first; p < particles.size(); ++p)
               {
+                const double top
+                  = geostatic ? surface_height_above(*body.shape,
+                                                     particles.position[p],
+                                                     step,
+                                                     1e-6 * step)
+                              : y_top;
                 const double syy = body.density * params.gravity[1]
-                                   * (y_top - particles.position[p][1]);
+                                   * (top - particles.position[p][1]);
                 SymmetricTensor<2, 3> s;
                 s[0][0] = s[2][2]   = k * syy;
                 s[1][1]             = syy;
@@ -636,6 +654,13 @@ namespace fsgmpm
           monitors.dissipated_energy += monitors.kinetic_energy;
           for (auto &v : particles.velocity)
             v = Tensor<1, dim>();
+          for (auto &C : particles.affine_velocity)
+            C = Tensor<2, dim>();
+          // The membrane's nodes too: they carry momentum of their own
+          // (Eq. 20 remaps it), which would set the fill moving again.
+          if (membrane)
+            for (auto &v : membrane->velocity)
+              v = Tensor<1, dim>();
           monitors.kinetic_energy = 0;
         }
       previous_kinetic_energy = monitors.kinetic_energy;
@@ -692,7 +717,7 @@ namespace fsgmpm
     const std::string &dir = params.output_directory;
     if (params.write_particles)
       {
-        particle_output.build_patches(particles);
+        particle_output.build_patches(particles, grid.get(), &nodes);
         const std::string name = particle_series->next_file(time);
         write_file_atomically(dir + "/" + name, [&](std::ostream &out) {
           particle_output.write_vtu(out);

@@ -108,7 +108,8 @@ namespace fsgmpm
   membrane_monitors(const Membrane<dim>      &membrane,
                     const ParticleStore<dim> &particles,
                     const double              contact_tolerance,
-                    const double              strip_width)
+                    const double              strip_width,
+                    const unsigned int        fill_body)
   {
     constexpr double big = std::numeric_limits<double>::max();
     double           x0 = big, x1 = -big, y0 = big, y1 = -big;
@@ -141,6 +142,8 @@ namespace fsgmpm
     double       n = 0, sy = 0, sp = 0, syy = 0, syp = 0, volume = 0;
     for (unsigned int q = 0; q < particles.size(); ++q)
       {
+        if (particles.body_id[q] != fill_body)
+          continue;
         volume += particles.volume[q];
         if (std::abs(particles.position[q][0] - xc) > 0.5 * strip_width)
           continue;
@@ -192,8 +195,11 @@ namespace fsgmpm
         std::vector<Point<2>> poly;
         for (const auto &x : membrane.ordered_nodes())
           poly.emplace_back(x[0], x[1]);
-        for (const auto &x : particles.position)
-          outside += !inside_polygon(poly, Point<2>(x[0], x[1]));
+        for (unsigned int q = 0; q < particles.size(); ++q)
+          if (particles.body_id[q] == fill_body)
+            outside += !inside_polygon(poly,
+                                       Point<2>(particles.position[q][0],
+                                                particles.position[q][1]));
       }
 
     return {{"particles_outside", outside},
@@ -218,7 +224,8 @@ namespace fsgmpm
     const Membrane<dim> &,                                           \
     const ParticleStore<dim> &,                                      \
     const double,                                                    \
-    const double);
+    const double,                                                    \
+    const unsigned int);
   FSGMPM_INSTANTIATE(2)
   FSGMPM_INSTANTIATE(3)
 #undef FSGMPM_INSTANTIATE

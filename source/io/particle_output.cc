@@ -9,7 +9,7 @@ namespace fsgmpm
   namespace
   {
     // Field layout: velocity (dim), stress xx yy zz xy [xz yz], pressure,
-    // mass, volume, material id, body id.
+    // mass, volume, material id, body id, free surface, vorticity.
     constexpr unsigned int
     n_stress_components(const int dim)
     {
@@ -19,9 +19,11 @@ namespace fsgmpm
 
   template <int dim>
   void
-  ParticleOutput<dim>::build_patches(const ParticleStore<dim> &particles)
+  ParticleOutput<dim>::build_patches(const ParticleStore<dim>  &particles,
+                                     const BackgroundGrid<dim> *grid,
+                                     const NodalFields<dim>    *nodes)
   {
-    const unsigned int n_fields = dim + n_stress_components(dim) + 6;
+    const unsigned int n_fields = dim + n_stress_components(dim) + 7;
     patches.resize(particles.size());
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
@@ -48,6 +50,20 @@ namespace fsgmpm
         patch.data(f++, 0) = particles.material_id[p];
         patch.data(f++, 0) = particles.body_id[p];
         patch.data(f++, 0) = particles.free_surface[p];
+        // Linear simplex: grad v = sum_i v_i (x) grad N_i is constant in
+        // the cell; omega_z = dv_y/dx - dv_x/dy.
+        double omega = 0;
+        if (grid != nullptr && nodes != nullptr)
+          {
+            const unsigned int c = particles.cell[p];
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              {
+                const auto &v = nodes->velocity[grid->cell_nodes[c][k]];
+                const auto &g = grid->shape_gradients[c][k];
+                omega += v[1] * g[0] - v[0] * g[1];
+              }
+          }
+        patch.data(f++, 0) = omega;
       }
   }
 
@@ -68,7 +84,8 @@ namespace fsgmpm
                           "volume",
                           "material_id",
                           "body_id",
-                          "free_surface"})
+                          "free_surface",
+                          "vorticity"})
       names.emplace_back(n);
     return names;
   }

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/io/container_monitors.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/scene_monitors.h>
 
@@ -24,7 +25,11 @@ namespace fsgmpm
                         "front_position|column_height|runout|final_height|"
                         "height|width|contact_width|max_tension|mean_tension|"
                         "top_pressure|bottom_pressure|membrane_length|"
-                        "enclosed_area|fluid_volume|particles_outside"),
+                        "enclosed_area|fluid_volume|particles_outside|"
+                        "container_centre_x|container_centre_y|"
+                        "container_velocity_y|container_tilt|soil_area|"
+                        "soil_points_outside|water_points_inside|body_mass|"
+                        "body_kinetic_energy"),
                       "Extra columns of monitors.csv: front_position (surge "
                       "front from the wall, bottom cell row) and "
                       "column_height (height at the wall), both from the "
@@ -40,7 +45,22 @@ namespace fsgmpm
                       "particle pressure against y in the central strip, at "
                       "the membrane's top and bottom), membrane_length, "
                       "enclosed_area, fluid_volume and particles_outside "
-                      "(points outside the closed membrane, 2D).");
+                      "(points of the Container body outside the closed "
+                      "membrane, 2D or an extruded 3D membrane). A body "
+                      "among others (geocontainer): container_centre_x, "
+                      "container_centre_y, container_velocity_y (mass-"
+                      "weighted, of the Container body), container_tilt "
+                      "(degrees of its major principal axis from x), "
+                      "soil_area (its point volumes, per metre in 3D), "
+                      "soil_points_outside (its points outside the "
+                      "membrane), water_points_inside (other bodies' points "
+                      "inside it). body_mass and body_kinetic_energy give "
+                      "one column per body: body_mass_0, body_mass_1, ...");
+    prm.declare_entry("Container body",
+                      "0",
+                      Patterns::Integer(0),
+                      "Index of the body the membrane holds (the fill), for "
+                      "the container and geotube columns.");
     prm.declare_entry("Wall position",
                       "auto",
                       Patterns::Anything(),
@@ -102,15 +122,29 @@ namespace fsgmpm
 
 
   template <int dim>
-  SceneMonitors<dim>::SceneMonitors(ParameterHandler &prm,
-                                    const Point<dim> &lower,
-                                    const Point<dim> &cell_size)
+  SceneMonitors<dim>::SceneMonitors(ParameterHandler  &prm,
+                                    const Point<dim>  &lower,
+                                    const Point<dim>  &cell_size,
+                                    const unsigned int n_bodies)
+    : n_bodies(n_bodies)
   {
     prm.enter_subsection("Monitors");
     for (const auto &name :
          Utilities::split_string_list(prm.get("Scene monitors"), ','))
-      if (!name.empty())
+      if (name == "body_mass" || name == "body_kinetic_energy")
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          columns.push_back(name + "_" + std::to_string(b));
+      else if (!name.empty())
         columns.push_back(name);
+    container = prm.get_integer("Container body");
+    AssertThrow(container < n_bodies,
+                ExcMessage("Monitors/Container body is "
+                           + std::to_string(container) + ", but there "
+                           + (n_bodies == 1
+                                ? "is 1 body"
+                                : "are " + std::to_string(n_bodies) + " bodies")
+                           + " (Bodies/Number of bodies); give the index of "
+                             "the body the membrane holds."));
     wall_x            = auto_or_value(prm.get("Wall position"),
                            lower[0],
                            "Monitors/Wall position");
@@ -180,7 +214,17 @@ namespace fsgmpm
                                             {"final_height", top}};
     if (membrane != nullptr)
       values.merge(membrane_monitors(
-        *membrane, particles, contact_tolerance, strip_width));
+        *membrane, particles, contact_tolerance, strip_width, container));
+    // Only when asked for: the inside tests cost a polygon walk per point.
+    const auto wanted = [&](const std::vector<std::string> &names) {
+      for (const auto &name : columns)
+        if (std::count(names.begin(), names.end(), name))
+          return true;
+      return false;
+    };
+    if (wanted(container_monitor_names()))
+      values.merge(container_monitors(particles, membrane, container));
+    values.merge(body_monitors(particles, n_bodies));
     std::vector<double> row;
     for (const auto &name : columns)
       {

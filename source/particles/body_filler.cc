@@ -2,6 +2,9 @@
 
 #include <fsgmpm/particles/body_filler.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace fsgmpm
 {
   namespace
@@ -96,14 +99,15 @@ namespace fsgmpm
 
   template <int dim>
   unsigned int
-  fill_body(const BackgroundGrid<dim> &grid,
-            const BodyShape<dim>      &shape,
-            const unsigned int         particles_per_cell,
-            const double               density,
-            const Tensor<1, dim>      &initial_velocity,
-            const std::uint16_t        material_id,
-            const std::uint16_t        body_id,
-            ParticleStore<dim>        &particles)
+  fill_body(const BackgroundGrid<dim>                 &grid,
+            const BodyShape<dim>                      &shape,
+            const unsigned int                         particles_per_cell,
+            const double                               density,
+            const Tensor<1, dim>                      &initial_velocity,
+            const std::uint16_t                        material_id,
+            const std::uint16_t                        body_id,
+            ParticleStore<dim>                        &particles,
+            const std::vector<const BodyShape<dim> *> &taken)
   {
     const std::string body_name
       = "Body " + std::to_string(body_id) + " (" + shape.description()
@@ -127,7 +131,7 @@ namespace fsgmpm
       }
 
     const auto   ref   = reference_particle_points<dim>(particles_per_cell);
-    unsigned int added = 0;
+    unsigned int added = 0, overlapped = 0;
     for (unsigned int c = 0; c < grid.n_cells(); ++c)
       {
         const double v = grid.cell_volume[c] / ref.size();
@@ -136,6 +140,13 @@ namespace fsgmpm
             const Point<dim> x = grid.position(c, lambda);
             if (!shape.inside(x))
               continue;
+            if (std::any_of(taken.begin(), taken.end(), [&](const auto *s) {
+                  return s->inside(x);
+                }))
+              {
+                ++overlapped;
+                continue;
+              }
             particles.add(x,
                           c,
                           density * v,
@@ -148,10 +159,49 @@ namespace fsgmpm
           }
       }
     AssertThrow(added > 0,
-                ExcMessage(body_name
-                           + ") contains no material point: it is smaller "
-                             "than the grid resolution or outside the mesh."));
+                ExcMessage(
+                  body_name
+                  + (overlapped > 0
+                       ? ") lies entirely inside bodies listed before it "
+                         "(bodies fill in order, an earlier body keeps the "
+                         "region they share); list it before them."
+                       : ") contains no material point: it is smaller than "
+                         "the grid resolution or outside the mesh.")));
     return added;
+  }
+
+
+
+  template <int dim>
+  double
+  surface_height_above(const BodyShape<dim> &shape,
+                       const Point<dim>     &x,
+                       const double          step,
+                       const double          tolerance)
+  {
+    Assert(step > 0 && tolerance > 0, ExcMessage("Positive step needed."));
+    double y_top = -std::numeric_limits<double>::max();
+    for (const Point<dim> &p : shape.outline_points())
+      y_top = std::max(y_top, p[1]);
+    // March up to the first point outside, then bisect the last step.
+    Point<dim> probe = x;
+    double     below = x[1];
+    while (below < y_top)
+      {
+        probe[1] = std::min(below + step, y_top);
+        if (!shape.inside(probe))
+          break;
+        below = probe[1];
+      }
+    if (below >= y_top)
+      return y_top;
+    double above = probe[1];
+    while (above - below > tolerance)
+      {
+        probe[1]                              = 0.5 * (below + above);
+        (shape.inside(probe) ? below : above) = probe[1];
+      }
+    return 0.5 * (below + above);
   }
 
   template std::vector<std::array<double, 3>>
@@ -166,7 +216,18 @@ namespace fsgmpm
                const Tensor<1, 2> &,
                const std::uint16_t,
                const std::uint16_t,
-               ParticleStore<2> &);
+               ParticleStore<2> &,
+               const std::vector<const BodyShape<2> *> &);
+  template double
+  surface_height_above<2>(const BodyShape<2> &,
+                          const Point<2> &,
+                          const double,
+                          const double);
+  template double
+  surface_height_above<3>(const BodyShape<3> &,
+                          const Point<3> &,
+                          const double,
+                          const double);
   template unsigned int
   fill_body<3>(const BackgroundGrid<3> &,
                const BodyShape<3> &,
@@ -175,5 +236,6 @@ namespace fsgmpm
                const Tensor<1, 3> &,
                const std::uint16_t,
                const std::uint16_t,
-               ParticleStore<3> &);
+               ParticleStore<3> &,
+               const std::vector<const BodyShape<3> *> &);
 } // namespace fsgmpm

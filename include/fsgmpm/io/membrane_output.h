@@ -30,15 +30,17 @@ namespace fsgmpm
    * (length-weighted), top_pressure and bottom_pressure (a least-squares line
    * of particle pressure against y over the central strip |x - x_c| <=
    * strip_width/2, evaluated at the membrane's top and bottom),
-   * membrane_length, enclosed_area (2D) and fluid_volume (sum of particle
-   * volumes; per metre in 2D).
+   * membrane_length, enclosed_area (2D), fluid_volume (sum of particle
+   * volumes; per metre in 2D) and particles_outside, the last three over
+   * the points of body @p fill_body only (the pressure strip too).
    */
   template <int dim>
   std::map<std::string, double>
   membrane_monitors(const Membrane<dim>      &membrane,
                     const ParticleStore<dim> &particles,
                     const double              contact_tolerance,
-                    const double              strip_width);
+                    const double              strip_width,
+                    const unsigned int        fill_body = 0);
 
   /// Names of the columns membrane_monitors() provides.
   const std::vector<std::string> &

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/data_out_base.h>
 
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/particles/particle_store.h>
 
 #include <string>
@@ -20,9 +22,14 @@ namespace fsgmpm
   class ParticleOutput : public DataOutInterface<0, dim>
   {
   public:
-    /// Build the patches from the current state of @p particles.
+    /// Build the patches from the current state of @p particles; with
+    /// @p grid and @p nodes also the vorticity (z component of curl v) of
+    /// the nodal velocities of each point's cell (paper Fig. 12), zero
+    /// without.
     void
-    build_patches(const ParticleStore<dim> &particles);
+    build_patches(const ParticleStore<dim>  &particles,
+                  const BackgroundGrid<dim> *grid  = nullptr,
+                  const NodalFields<dim>    *nodes = nullptr);
 
   private:
     const std::vector<DataOutBase::Patch<0, dim>> &

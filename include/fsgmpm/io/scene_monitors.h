@@ -29,10 +29,12 @@ namespace fsgmpm
     declare_parameters(ParameterHandler &prm);
 
     /// @p lower, @p cell_size: mesh corner and cell size per direction,
-    /// used where the parameters say "auto".
-    SceneMonitors(ParameterHandler &prm,
-                  const Point<dim> &lower,
-                  const Point<dim> &cell_size);
+    /// used where the parameters say "auto"; @p n_bodies for the per-body
+    /// columns.
+    SceneMonitors(ParameterHandler  &prm,
+                  const Point<dim>  &lower,
+                  const Point<dim>  &cell_size,
+                  const unsigned int n_bodies = 1);
 
     const std::vector<std::string> &
     names() const
@@ -54,6 +56,7 @@ namespace fsgmpm
     std::vector<std::string> columns;
     double                   wall_x, base_y, row_height, column_width;
     double                   contact_tolerance, strip_width;
+    unsigned int             n_bodies, container;
   };
 } // namespace fsgmpm
 

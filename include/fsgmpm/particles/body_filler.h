@@ -23,20 +23,37 @@ namespace fsgmpm
   /**
    * Fill @p shape with material points: every sub-cell centroid of every
    * background cell that lies inside the shape becomes a point with volume
-   * (cell volume / particles per cell) and mass density * volume. Throws if
-   * the shape reaches outside the mesh or holds no point. Returns the number
-   * of points added.
+   * (cell volume / particles per cell) and mass density * volume, unless
+   * it lies inside one of the shapes in @p taken (the regions of bodies
+   * filled before: bodies fill in order, so a water tank around a bag does
+   * not put a second mass where the bag is). Throws if the shape reaches
+   * outside the mesh or holds no point. Returns the number of points added.
    */
   template <int dim>
   unsigned int
-  fill_body(const BackgroundGrid<dim> &grid,
-            const BodyShape<dim>      &shape,
-            const unsigned int         particles_per_cell,
-            const double               density,
-            const Tensor<1, dim>      &initial_velocity,
-            const std::uint16_t        material_id,
-            const std::uint16_t        body_id,
-            ParticleStore<dim>        &particles);
+  fill_body(const BackgroundGrid<dim>                 &grid,
+            const BodyShape<dim>                      &shape,
+            const unsigned int                         particles_per_cell,
+            const double                               density,
+            const Tensor<1, dim>                      &initial_velocity,
+            const std::uint16_t                        material_id,
+            const std::uint16_t                        body_id,
+            ParticleStore<dim>                        &particles,
+            const std::vector<const BodyShape<dim> *> &taken = {});
+
+  /**
+   * Height of the surface of @p shape above the inside point @p x: the
+   * first y above x (same x, z) where the vertical line leaves the shape,
+   * to @p tolerance (bisection after steps of @p step). The depth of a
+   * point below its body's own top, for the geostatic stress under a
+   * sloped or curved surface.
+   */
+  template <int dim>
+  double
+  surface_height_above(const BodyShape<dim> &shape,
+                       const Point<dim>     &x,
+                       const double          step,
+                       const double          tolerance);
 } // namespace fsgmpm
 
 #endif

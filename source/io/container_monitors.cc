@@ -1,0 +1,136 @@
+#include <fsgmpm/io/container_monitors.h>
+#include <fsgmpm/particles/body_shape.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  const std::vector<std::string> &
+  container_monitor_names()
+  {
+    static const std::vector<std::string> names = {"container_centre_x",
+                                                   "container_centre_y",
+                                                   "container_velocity_y",
+                                                   "container_tilt",
+                                                   "soil_area",
+                                                   "soil_points_outside",
+                                                   "water_points_inside"};
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, double>
+  container_monitors(const ParticleStore<dim> &particles,
+                     const Membrane<dim>      *membrane,
+                     const unsigned int        container)
+  {
+    double m = 0, mx = 0, my = 0, mvy = 0, volume = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      if (particles.body_id[p] == container)
+        {
+          m += particles.mass[p];
+          mx += particles.mass[p] * particles.position[p][0];
+          my += particles.mass[p] * particles.position[p][1];
+          mvy += particles.mass[p] * particles.velocity[p][1];
+          volume += particles.volume[p];
+        }
+    const double xc = m > 0 ? mx / m : 0., yc = m > 0 ? my / m : 0.;
+
+    // Principal axis of the second moment: tan 2 theta = 2 Ixy/(Ixx - Iyy)
+    // with Ixx = sum m dx^2 (spread along x).
+    double ixx = 0, iyy = 0, ixy = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      if (particles.body_id[p] == container)
+        {
+          const double dx = particles.position[p][0] - xc,
+                       dy = particles.position[p][1] - yc;
+          ixx += particles.mass[p] * dx * dx;
+          iyy += particles.mass[p] * dy * dy;
+          ixy += particles.mass[p] * dx * dy;
+        }
+    double tilt = 0.5 * std::atan2(2 * ixy, ixx - iyy) * 180. / M_PI;
+
+    double soil_outside = 0, water_inside = 0;
+    if (membrane != nullptr && (dim == 2 || !membrane->rings.empty()))
+      {
+        std::vector<Point<2>> poly;
+        for (const auto &x : membrane->ordered_nodes())
+          poly.emplace_back(x[0], x[1]);
+        for (unsigned int p = 0; p < particles.size(); ++p)
+          {
+            const bool inside
+              = inside_polygon(poly,
+                               Point<2>(particles.position[p][0],
+                                        particles.position[p][1]));
+            if (particles.body_id[p] == container)
+              soil_outside += !inside;
+            else
+              water_inside += inside;
+          }
+      }
+    if (dim == 3)
+      {
+        // Per unit thickness, comparable with the plane-strain scene.
+        double z0 = std::numeric_limits<double>::max(), z1 = -z0;
+        for (const auto &x : particles.position)
+          {
+            z0 = std::min(z0, x[dim - 1]);
+            z1 = std::max(z1, x[dim - 1]);
+          }
+        if (membrane != nullptr)
+          for (const auto &x : membrane->position)
+            {
+              z0 = std::min(z0, x[dim - 1]);
+              z1 = std::max(z1, x[dim - 1]);
+            }
+        if (z1 > z0)
+          volume /= z1 - z0;
+      }
+    return {{"container_centre_x", xc},
+            {"container_centre_y", yc},
+            {"container_velocity_y", m > 0 ? mvy / m : 0.},
+            {"container_tilt", tilt},
+            {"soil_area", volume},
+            {"soil_points_outside", soil_outside},
+            {"water_points_inside", water_inside}};
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, double>
+  body_monitors(const ParticleStore<dim> &particles,
+                const unsigned int        n_bodies)
+  {
+    std::vector<double> mass(n_bodies, 0.), kinetic(n_bodies, 0.);
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      if (particles.body_id[p] < n_bodies)
+        {
+          mass[particles.body_id[p]] += particles.mass[p];
+          kinetic[particles.body_id[p]]
+            += 0.5 * particles.mass[p] * particles.velocity[p].norm_square();
+        }
+    std::map<std::string, double> values;
+    for (unsigned int b = 0; b < n_bodies; ++b)
+      {
+        values["body_mass_" + std::to_string(b)]           = mass[b];
+        values["body_kinetic_energy_" + std::to_string(b)] = kinetic[b];
+      }
+    return values;
+  }
+
+  template std::map<std::string, double>
+  container_monitors<2>(const ParticleStore<2> &,
+                        const Membrane<2> *,
+                        const unsigned int);
+  template std::map<std::string, double>
+  container_monitors<3>(const ParticleStore<3> &,
+                        const Membrane<3> *,
+                        const unsigned int);
+  template std::map<std::string, double>
+  body_monitors<2>(const ParticleStore<2> &, const unsigned int);
+  template std::map<std::string, double>
+  body_monitors<3>(const ParticleStore<3> &, const unsigned int);
+} // namespace fsgmpm
