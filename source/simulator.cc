@@ -569,7 +569,9 @@ namespace fsgmpm
         *constraints, gravity, params.local_damping, dt, nodes);
     });
     timed(g2p_stage, [&] {
-      Stages::g2p(*grid, nodes, dt, particles);
+      const double tau = params.flip_noise_relaxation_time;
+      Stages::g2p(
+        *grid, nodes, dt, particles, tau > 0 ? -std::expm1(-dt / tau) : 0.);
       if (membrane)
         Stages::membrane_g2p(*grid, nodes, *membrane);
     });

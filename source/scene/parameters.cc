@@ -106,6 +106,15 @@ namespace fsgmpm
         "the grid does not see. APIC (Jiang et al. 2015): v_p = v(x_p) plus "
         "the cell's velocity gradient, mapped back affinely; drops the "
         "sub-cell noise, keeps resolved (affine) motion.");
+      prm.declare_entry(
+        "FLIP noise relaxation time",
+        "0",
+        Patterns::Double(0),
+        "Velocity transfer = FLIP: if > 0, blend each step's FLIP update "
+        "with the fraction beta = 1 - exp(-dt/tau) of PIC's grid velocity, "
+        "so that the sub-cell velocity noise FLIP keeps decays over tau "
+        "seconds whatever the time step (resolved motion is untouched); 0: "
+        "pure FLIP (paper Eq. 19).");
       prm.declare_entry("Gravity",
                         "0, -9.81",
                         Patterns::List(Patterns::Double()),
@@ -308,6 +317,7 @@ namespace fsgmpm
     fixed_dt  = prm.get_double("Fixed time step");
     use_musl  = (prm.get("Update scheme") == "MUSL");
     use_apic  = (prm.get("Velocity transfer") == "APIC");
+    flip_noise_relaxation_time = prm.get_double("FLIP noise relaxation time");
     gravity   = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     AssertThrow(gravity.norm() <= 1e5,
                 ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "

@@ -10,18 +10,27 @@ namespace fsgmpm
     g2p(const BackgroundGrid<dim> &grid,
         const NodalFields<dim>    &nodes,
         const double               dt,
-        ParticleStore<dim>        &particles)
+        ParticleStore<dim>        &particles,
+        const double               pic_fraction)
     {
-      // FLIP (Eq. 19): v_p += dt a(x_p). APIC (Jiang et al. 2015): the point
+      // FLIP (Eq. 19): v_p += dt a(x_p), blended with a PIC fraction beta:
+      // v_p = (1 - beta)(v_p + dt a(x_p)) + beta v(x_p), which leaves the
+      // grid-resolved motion alone and lets the sub-cell part (FLIP's noise)
+      // decay by (1 - beta) per step (Zhu and Bridson 2005). APIC (Jiang et al. 2015): the point
       // takes the grid's velocity, v_p = v(x_p), so the sub-cell velocity
       // noise that FLIP keeps on the points is dropped; its affine part C_p
       // is set after the remap (store_affine_velocity).
       const bool  apic  = particles.has_affine_velocity();
+      const bool  blend = !apic && pic_fraction > 0;
       const auto &field = apic ? nodes.velocity : nodes.acceleration;
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        Tensor<1, dim> f[dim + 1];
+        Tensor<1, dim> f[dim + 1], v[dim + 1];
         for (unsigned int k = 0; k < dim + 1; ++k)
-          f[k] = field[grid.cell_nodes[c][k]];
+          {
+            f[k] = field[grid.cell_nodes[c][k]];
+            if (blend)
+              v[k] = nodes.velocity[grid.cell_nodes[c][k]];
+          }
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
@@ -34,6 +43,14 @@ namespace fsgmpm
               particles.velocity[p] = value;
             else
               particles.velocity[p] += dt * value;
+            if (blend)
+              {
+                Tensor<1, dim> pic;
+                for (unsigned int k = 0; k < dim + 1; ++k)
+                  pic += lambda[k] * v[k];
+                particles.velocity[p] += pic_fraction
+                                         * (pic - particles.velocity[p]);
+              }
           }
       });
     }
@@ -64,11 +81,13 @@ namespace fsgmpm
     g2p<2>(const BackgroundGrid<2> &,
            const NodalFields<2> &,
            const double,
-           ParticleStore<2> &);
+           ParticleStore<2> &,
+           const double);
     template void
     g2p<3>(const BackgroundGrid<3> &,
            const NodalFields<3> &,
            const double,
-           ParticleStore<3> &);
+           ParticleStore<3> &,
+           const double);
   } // namespace Stages
 } // namespace fsgmpm

@@ -39,6 +39,8 @@ namespace fsgmpm
     double         fixed_dt;
     bool           use_musl;
     bool           use_apic;
+    /// FLIP-PIC blend: sub-cell noise decays over this time (s; 0: FLIP).
+    double flip_noise_relaxation_time;
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
     bool           stop_when_converged;

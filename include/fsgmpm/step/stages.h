@@ -62,14 +62,17 @@ namespace fsgmpm
                 const double                 dt,
                 NodalFields<dim>            &nodes);
 
-    /// Stage 3 (Eq. 19): FLIP v_p += dt sum_i N_i(x_p) a_i; or, if the
-    /// points carry an affine velocity, APIC: v_p = sum_i N_i(x_p) v_i.
+    /// Stage 3 (Eq. 19): FLIP v_p += dt sum_i N_i(x_p) a_i, then blended
+    /// with the fraction @p pic_fraction of PIC's v_p = sum_i N_i(x_p) v_i
+    /// (0: pure FLIP); or, if the points carry an affine velocity, APIC:
+    /// v_p = sum_i N_i(x_p) v_i.
     template <int dim>
     void
     g2p(const BackgroundGrid<dim> &grid,
         const NodalFields<dim>    &nodes,
         const double               dt,
-        ParticleStore<dim>        &particles);
+        ParticleStore<dim>        &particles,
+        const double               pic_fraction = 0);
 
     /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
     /// membrane-node) momenta, with the wall conditions (suppresses the
