@@ -59,7 +59,12 @@ namespace fsgmpm
         std::string rest;
         AssertThrow(!(in >> rest),
                     ExcMessage(path + ": unexpected <" + rest + "> in <" + item
-                               + ">." + help));
+                               + ">."
+                               + (w.type == WallType::slip
+                                    ? " 'slip' takes no coefficient; for "
+                                      "Coulomb friction use 'friction <mu>'."
+                                    : "")
+                               + help));
         AssertThrow(walls.count(id) == 0,
                     ExcMessage(path + ": boundary id " + parts[0]
                                + " is given twice."));
