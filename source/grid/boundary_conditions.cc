@@ -13,8 +13,10 @@ namespace fsgmpm
     std::map<types::boundary_id, WallCondition> walls;
     const std::string                           help
       = " Expected a comma-separated list of 'id: type' with type one of "
-        "free, fixed, roller, or 'friction <mu>' (mu >= 0), e.g. "
-        "'0: roller, 2: friction 0.5'.";
+        "free, fixed (no slip), roller (bilateral: no motion through or away "
+        "from the wall), slip (unilateral, frictionless: material may leave "
+        "the wall) or 'friction <mu>' (unilateral Coulomb contact, mu >= 0), "
+        "e.g. '0: slip, 1: roller, 2: friction 0.5'.";
     for (const std::string &item : Utilities::split_string_list(text, ','))
       {
         const auto parts = Utilities::split_string_list(item, ':');
@@ -40,6 +42,8 @@ namespace fsgmpm
           w.type = WallType::fixed;
         else if (type == "roller")
           w.type = WallType::roller;
+        else if (type == "slip")
+          w.type = WallType::slip; // friction stays 0
         else if (type == "friction")
           {
             w.type = WallType::friction;
@@ -55,7 +59,12 @@ namespace fsgmpm
         std::string rest;
         AssertThrow(!(in >> rest),
                     ExcMessage(path + ": unexpected <" + rest + "> in <" + item
-                               + ">." + help));
+                               + ">."
+                               + (w.type == WallType::slip
+                                    ? " 'slip' takes no coefficient; for "
+                                      "Coulomb friction use 'friction <mu>'."
+                                    : "")
+                               + help));
         AssertThrow(walls.count(id) == 0,
                     ExcMessage(path + ": boundary id " + parts[0]
                                + " is given twice."));

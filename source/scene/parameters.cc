@@ -257,10 +257,15 @@ namespace fsgmpm
                         "0: roller, 1: roller, 2: roller, 3: free",
                         Patterns::Anything(),
                         "Walls by boundary id: 'id: type, ...' with type "
-                        "free, fixed, roller (slip) or 'friction <mu>' "
-                        "(unilateral Coulomb contact). Box ids: 0/1 x-min/"
-                        "max, 2/3 y-min/max, 4/5 z-min/max. Ids not listed "
-                        "are free.");
+                        "free; fixed (no slip); roller (bilateral: no "
+                        "normal motion, neither into nor away from the "
+                        "wall; material sticks to it); slip (unilateral, "
+                        "frictionless: no penetration, material may leave "
+                        "the wall, e.g. water along tank sides); or "
+                        "'friction <mu>' (unilateral Coulomb contact, "
+                        "applied once per step in the grid update). Box "
+                        "ids: 0/1 x-min/max, 2/3 y-min/max, 4/5 z-min/max. "
+                        "Ids not listed are free.");
     }
     prm.leave_subsection();
 

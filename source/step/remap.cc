@@ -33,12 +33,13 @@ namespace fsgmpm
       if (membrane != nullptr)
         membrane_remap(grid, *membrane, nodes);
 
-      // Eq. (20) with the lumped mass matrix.
+      // Eq. (20) with the lumped mass matrix. Walls act kinematically only:
+      // the friction impulse was applied once, in the grid update.
       for (const unsigned int i : nodes.active_nodes)
         if (nodes.mass[i] > 0)
           {
             nodes.velocity[i] = nodes.momentum[i] / nodes.mass[i];
-            constraints.apply(i, nodes.velocity[i]);
+            constraints.apply_kinematic(i, nodes.velocity[i]);
           }
     }
 

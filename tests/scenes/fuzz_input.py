@@ -181,6 +181,7 @@ def anything_values(path, fixtures):
                 "-1: fixed", "255: fixed", "99999999999: fixed", "x: fixed",
                 "0: friction", "0: friction -1", "0: friction nan",
                 "0: friction inf", "0: friction 1e300", "0: friction 0.5 1",
+                "0: slip 0.3", "0: slip, 1: slip, 2: slip, 3: slip",
                 "0: roller, 0: fixed", "0: fixed, 1: fixed, 2: fixed, 3: fixed",
                 "0: free, 1: free, 2: free, 3: free", "7: fixed"]
     if name == "Directory":

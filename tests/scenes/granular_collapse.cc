@@ -11,13 +11,14 @@
 // 1.2 per point; measured +4.7% at a = 1 and +8.8% at a = 3; uncapped,
 // front points grew 100-fold); the area under the deposit's profile
 // (highest point per 1 cm column plus half a point spacing) matches the
-// points' volume within 12% (measured +7.6% and +5.0%: the profile
+// points' volume within 12% (measured +7.6% and +4.9%: the profile
 // sees the loose front points' gaps); at a = 1 the final height is within
-// 7% of H0 (Lube et al.: H_inf = H0 for a < 1.15; measured -5.6%, about
+// 7% of H0 (Lube et al.: H_inf = H0 for a < 1.15; measured -6.0%, about
 // one cell); the normalised run-out (L_inf - L0)/L0 is within 25% of the
 // quasi-2D scaling of Lube et al. (2005), 1.2 a (a < 1.8) and
-// 1.9 a^(2/3) (a > 2.8). Measured: 1.44 (+20%) and 4.26 (+8%); with FLIP
-// transfers 2.06 and 6.17. At a = 3 the run-out still grows with
+// 1.9 a^(2/3) (a > 2.8). Measured: 1.43 (+19%) and 4.19 (+6%) (1.44 and
+// 4.26 while friction walls acted twice per step); with FLIP transfers
+// 2.06 and 6.17 (before that change). At a = 3 the run-out still grows with
 // refinement (4.64 at 40 cells, doc/soil_validation.md).
 
 #include <fsgmpm/simulator.h>

@@ -19,7 +19,8 @@ namespace fsgmpm
   {
     free,    ///< no constraint
     fixed,   ///< all velocity components zero (no slip)
-    roller,  ///< normal velocity zero, tangential free (bilateral slip)
+    roller,  ///< normal velocity zero both ways, tangential free (bilateral)
+    slip,    ///< unilateral frictionless contact: may leave, never penetrate
     friction ///< unilateral contact with Coulomb friction coefficient mu
   };
 
@@ -30,8 +31,8 @@ namespace fsgmpm
   };
 
   /**
-   * Parse "id: type[, id: type ...]" where type is free, fixed, roller or
-   * "friction <mu>". Throws with a message naming @p parameter_path.
+   * Parse "id: type[, id: type ...]" where type is free, fixed, roller,
+   * slip or "friction <mu>". Throws with a message naming @p parameter_path.
    */
   std::map<types::boundary_id, WallCondition>
   parse_wall_conditions(const std::string &text,
@@ -50,7 +51,13 @@ namespace fsgmpm
     NodalConstraints(const BackgroundGrid<dim>                         &grid,
                      const std::map<types::boundary_id, WallCondition> &walls);
 
-    /// Apply the wall conditions to a nodal velocity.
+    /**
+     * Apply the wall conditions, contact force included, to the velocity
+     * v^{n+1} of the grid update: fixed walls stop the node, rollers remove
+     * the normal component, slip and friction walls remove the component
+     * into the wall and, for friction, reduce the tangential speed by
+     * mu times that normal speed (Coulomb, down to rest).
+     */
     void
     apply(const unsigned int node, Tensor<1, dim> &v) const
     {
@@ -68,13 +75,41 @@ namespace fsgmpm
           const double vn = v * e.normal[k];
           if (e.type[k] == WallType::roller)
             v -= vn * e.normal[k];
-          else if (vn > 0) // friction wall: only when moving into it
+          else if (vn > 0) // slip or friction wall: only when moving into it
             {
               Tensor<1, dim> vt  = v - vn * e.normal[k];
               const double   vtn = vt.norm();
               const double   red = e.friction[k] * vn;
               v = (vtn > red) ? vt * (1. - red / vtn) : Tensor<1, dim>();
             }
+        }
+    }
+
+    /**
+     * Only the kinematic part of the wall conditions, for the remapped
+     * velocity of Eq. (20): no penetration (and no separation from rollers,
+     * no motion at fixed walls), but no friction. The friction impulse was
+     * already given by apply() in the grid update and reached the points
+     * through their accelerations; reducing the tangential velocity again
+     * here would apply it twice to the positions and strain rates.
+     */
+    void
+    apply_kinematic(const unsigned int node, Tensor<1, dim> &v) const
+    {
+      const unsigned int idx = node_to_entry[node];
+      if (idx == BackgroundGrid<dim>::invalid)
+        return;
+      const Entry &e = entries[idx];
+      if (e.fixed)
+        {
+          v = Tensor<1, dim>();
+          return;
+        }
+      for (unsigned int k = 0; k < e.n_walls; ++k)
+        {
+          const double vn = v * e.normal[k];
+          if (e.type[k] == WallType::roller || vn > 0)
+            v -= vn * e.normal[k];
         }
     }
 

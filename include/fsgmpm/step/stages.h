@@ -75,8 +75,9 @@ namespace fsgmpm
         const double               pic_fraction = 0);
 
     /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
-    /// membrane-node) momenta, with the wall conditions (suppresses the
-    /// small-mass-node instability).
+    /// membrane-node) momenta, with the kinematic wall conditions
+    /// (NodalConstraints::apply_kinematic: no penetration, no second
+    /// friction impulse); suppresses the small-mass-node instability.
     template <int dim>
     void
     remap(const BackgroundGrid<dim>   &grid,

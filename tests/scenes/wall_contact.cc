@@ -1,0 +1,224 @@
+// Wall types and contact (issue 12).
+//
+// WaterLeavesSlipWallNotRoller: a weakly compressible water block (0.1 x
+//   0.1 m, 1 cm cells, no gravity, no tension) starts against the x-min wall
+//   moving away from it at 0.5 m/s. On a 'slip' wall (unilateral) it leaves
+//   the wall rigidly: after 0.1 s its smallest x has moved 0.05 m (to
+//   1e-12 m; measured 6e-17 m), more than 5 cells from the wall. On a
+//   'roller' wall (bilateral) the wall holds the points of the first cell:
+//   the smallest x moves less than half a cell (measured 0.28 cell).
+// ImpactEnergy: prm/elastic_block_drop.prm (E = 1 MPa block dropped 0.2 m)
+//   onto a 'roller', a 'slip' and a 'friction 0.3' floor with the
+//   energy-creation guard off; total energy = kinetic + strain + potential.
+//   The bilateral roller must not create energy (end below the initial
+//   energy, peak below +2%; measured -4.9% and +0.9%). The unilateral
+//   walls still gain at this hard impact (README, Known limitations;
+//   measured +82% on slip, +60% on friction 0.3, the same as before
+//   friction was applied once): bounded at +90% and +70%, so that the gain
+//   cannot grow unnoticed, and friction must end below slip.
+// FrictionStoppingDistance: the block of friction_sliding (1 m/s on
+//   'friction 0.3') moves its points with the remapped velocities, so a
+//   second friction impulse in the remap would shorten its path; the mean
+//   displacement must be v0^2 / (2 mu g) within 0.05% (measured +0.012%;
+//   +0.011% before, as the sliding block has almost no normal velocity at
+//   the remap: the unit test wall_constraints shows the second impulse).
+
+#include <fsgmpm/simulator.h>
+#include <gtest/gtest.h>
+
+#include "test_utilities.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <string>
+
+using namespace fsgmpm;
+
+namespace
+{
+  // Smallest point x at the start and after 0.1 s of the water block
+  // leaving the x-min wall at 0.5 m/s.
+  std::pair<double, double>
+  water_leaving(const std::string &wall)
+  {
+    auto         prm = test_tools::make_parameters(R"(
+subsection Simulation
+  set End time = 0.1
+  set Gravity = 0, 0
+end
+subsection Grid
+  set Upper corner = 0.4, 0.2
+  set Subdivisions = 40, 20
+  set Boundary conditions = 0: )" + wall + R"(
+end
+subsection Bodies
+  subsection Body 0
+    set Material model = Newtonian fluid
+    set Initial stress = none
+    set Box lower corner = 0, 0.05
+    set Box upper corner = 0.1, 0.15
+    set Initial velocity = 0.5, 0
+    subsection Newtonian fluid
+      set Bulk modulus = 2e6
+    end
+  end
+end
+)");
+    Simulator<2> sim(*prm);
+    const auto  &ps       = sim.get_particles();
+    const auto   smallest = [&]() {
+      double x_min = 1e300;
+      for (unsigned int p = 0; p < ps.size(); ++p)
+        x_min = std::min(x_min, ps.position[p][0]);
+      return x_min;
+    };
+    const double x0 = smallest();
+    std::cout << std::setprecision(8) << "[ measured ] water on a '" << wall
+              << "' wall: smallest x " << x0 << " m";
+    double next = 0.025;
+    while (sim.advance())
+      if (sim.get_time() >= next - 1e-12)
+        {
+          std::cout << ", " << smallest() << " m at " << sim.get_time() << " s";
+          next += 0.025;
+        }
+    const double x_end = smallest();
+    std::cout << ", " << x_end << " m at " << sim.get_time() << " s; moved "
+              << x_end - x0 << " m (- 0.05 m = " << std::scientific
+              << x_end - x0 - 0.05 << " m)" << std::defaultfloat
+              << std::setprecision(6) << std::endl;
+    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    return {x0, x_end};
+  }
+
+  struct EnergyHistory
+  {
+    double initial = 0, end = 0, max = 0;
+    double end_kinetic_strain = 0, gravity_work = 0;
+  };
+
+  // Total energy of prm/elastic_block_drop.prm on the given floor.
+  EnergyHistory
+  block_drop(const std::string &floor)
+  {
+    auto prm = test_tools::make_parameters_from_scene("elastic_block_drop.prm");
+    prm->enter_subsection("Grid");
+    prm->set("Boundary conditions",
+             "0: roller, 1: roller, 2: " + floor + ", 3: free");
+    prm->leave_subsection();
+    prm->enter_subsection("Stability");
+    prm->set("Energy creation tolerance", "0");
+    prm->leave_subsection();
+    Simulator<2> sim(*prm);
+    const auto  &ps        = sim.get_particles();
+    const auto   potential = [&]() {
+      double pe = 0;
+      for (unsigned int p = 0; p < ps.size(); ++p)
+        pe += ps.mass[p] * 9.81 * ps.position[p][1];
+      return pe;
+    };
+    const auto total = [&]() {
+      const auto &m = sim.get_monitors();
+      return m.kinetic_energy + m.strain_energy + potential();
+    };
+    EnergyHistory e;
+    const double  pe0 = potential();
+    e.initial = e.max = total();
+    while (sim.advance())
+      e.max = std::max(e.max, total());
+    e.end                = total();
+    e.max                = std::max(e.max, e.end);
+    e.gravity_work       = pe0 - potential();
+    e.end_kinetic_strain = e.end - potential();
+    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    std::cout << "[ measured ] block drop on '" << floor
+              << "': total energy initial " << e.initial << " J/m, end "
+              << e.end << " J/m (" << 100 * (e.end / e.initial - 1)
+              << " %), max " << e.max << " J/m ("
+              << 100 * (e.max / e.initial - 1)
+              << " %); kinetic + strain at the end / work of gravity = "
+              << e.end_kinetic_strain / e.gravity_work << std::endl;
+    return e;
+  }
+} // namespace
+
+
+
+TEST(WallContact, WaterLeavesSlipWallNotRoller)
+{
+  const double h = 0.01, travel = 0.5 * 0.1;
+  // Slip: nothing holds the block, it translates rigidly (measured: to
+  // 6e-17 m, round-off), more than 5 cells away from the wall.
+  const auto [x0_slip, x_slip] = water_leaving("slip");
+  EXPECT_NEAR(x_slip, x0_slip + travel, 1e-12);
+  EXPECT_GT(x_slip, 5 * h);
+  // Roller: the wall nodes keep zero normal velocity, so the points of the
+  // first cell stay; they creep 0.28 h away in 0.1 s (measured; the
+  // tension-free water separates inside the first cell).
+  const auto [x0_roller, x_roller] = water_leaving("roller");
+  EXPECT_LT(x_roller - x0_roller, 0.5 * h);
+}
+
+
+
+TEST(WallContact, ImpactEnergy)
+{
+  const EnergyHistory roller = block_drop("roller");
+  EXPECT_LT(roller.end, roller.initial);
+  EXPECT_LT(roller.max, 1.02 * roller.initial);
+  const EnergyHistory slip = block_drop("slip");
+  EXPECT_LT(slip.end, 1.9 * slip.initial);
+  const EnergyHistory friction = block_drop("friction 0.3");
+  EXPECT_LT(friction.end, 1.7 * friction.initial);
+  EXPECT_LT(friction.end, slip.end);
+}
+
+
+
+TEST(WallContact, FrictionStoppingDistance)
+{
+  const double mu = 0.3, g = 9.81, v0 = 1.0;
+  auto         prm = test_tools::make_parameters(R"(
+subsection Simulation
+  set End time = 0.45
+end
+subsection Grid
+  set Upper corner = 1, 0.25
+  set Subdivisions = 40, 10
+  set Boundary conditions = 0: roller, 1: roller, 2: friction 0.3
+end
+subsection Bodies
+  subsection Body 0
+    set Box lower corner = 0.1, 0
+    set Box upper corner = 0.4, 0.1
+    set Initial velocity = 1, 0
+    set Initial stress = geostatic
+    set K0 = 0.428571428571
+    subsection Linear elastic
+      set Young's modulus = 1e7
+    end
+  end
+end
+)");
+  Simulator<2> sim(*prm);
+  const auto  &ps     = sim.get_particles();
+  const auto   mean_x = [&]() {
+    double m = 0, mx = 0;
+    for (unsigned int p = 0; p < ps.size(); ++p)
+      {
+        m += ps.mass[p];
+        mx += ps.mass[p] * ps.position[p][0];
+      }
+    return mx / m;
+  };
+  const double x0 = mean_x();
+  while (sim.advance())
+    {}
+  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  const double distance = mean_x() - x0, reference = v0 * v0 / (2 * mu * g);
+  std::cout << "[ measured ] stopping distance " << distance
+            << " m (v0^2/(2 mu g) = " << reference << " m, error "
+            << 100 * (distance / reference - 1) << " %)" << std::endl;
+  EXPECT_NEAR(distance / reference, 1.0, 5e-4);
+}
