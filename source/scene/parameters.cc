@@ -316,14 +316,14 @@ namespace fsgmpm
   Parameters<dim>::Parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Simulation");
-    end_time  = prm.get_double("End time");
-    max_steps = prm.get_integer("Maximum number of steps");
-    courant   = prm.get_double("Courant number");
-    fixed_dt  = prm.get_double("Fixed time step");
-    use_musl  = (prm.get("Update scheme") == "MUSL");
-    use_apic  = (prm.get("Velocity transfer") == "APIC");
+    end_time                   = prm.get_double("End time");
+    max_steps                  = prm.get_integer("Maximum number of steps");
+    courant                    = prm.get_double("Courant number");
+    fixed_dt                   = prm.get_double("Fixed time step");
+    use_musl                   = (prm.get("Update scheme") == "MUSL");
+    use_apic                   = (prm.get("Velocity transfer") == "APIC");
     flip_noise_relaxation_time = prm.get_double("FLIP noise relaxation time");
-    gravity   = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
+    gravity = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     AssertThrow(gravity.norm() <= 1e5,
                 ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "
                            "(10^4 g) in magnitude; got <"

@@ -16,10 +16,10 @@ namespace fsgmpm
       // FLIP (Eq. 19): v_p += dt a(x_p), blended with a PIC fraction beta:
       // v_p = (1 - beta)(v_p + dt a(x_p)) + beta v(x_p), which leaves the
       // grid-resolved motion alone and lets the sub-cell part (FLIP's noise)
-      // decay by (1 - beta) per step (Zhu and Bridson 2005). APIC (Jiang et al. 2015): the point
-      // takes the grid's velocity, v_p = v(x_p), so the sub-cell velocity
-      // noise that FLIP keeps on the points is dropped; its affine part C_p
-      // is set after the remap (store_affine_velocity).
+      // decay by (1 - beta) per step (Zhu and Bridson 2005). APIC (Jiang et al.
+      // 2015): the point takes the grid's velocity, v_p = v(x_p), so the
+      // sub-cell velocity noise that FLIP keeps on the points is dropped; its
+      // affine part C_p is set after the remap (store_affine_velocity).
       const bool  apic  = particles.has_affine_velocity();
       const bool  blend = !apic && pic_fraction > 0;
       const auto &field = apic ? nodes.velocity : nodes.acceleration;
@@ -48,8 +48,8 @@ namespace fsgmpm
                 Tensor<1, dim> pic;
                 for (unsigned int k = 0; k < dim + 1; ++k)
                   pic += lambda[k] * v[k];
-                particles.velocity[p] += pic_fraction
-                                         * (pic - particles.velocity[p]);
+                particles.velocity[p]
+                  += pic_fraction * (pic - particles.velocity[p]);
               }
           }
       });

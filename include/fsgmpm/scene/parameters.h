@@ -33,14 +33,14 @@ namespace fsgmpm
     explicit Parameters(ParameterHandler &prm);
 
     // Simulation
-    double         end_time;
-    unsigned int   max_steps;
-    double         courant;
-    double         fixed_dt;
-    bool           use_musl;
-    bool           use_apic;
+    double       end_time;
+    unsigned int max_steps;
+    double       courant;
+    double       fixed_dt;
+    bool         use_musl;
+    bool         use_apic;
     /// FLIP-PIC blend: sub-cell noise decays over this time (s; 0: FLIP).
-    double flip_noise_relaxation_time;
+    double         flip_noise_relaxation_time;
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
     bool           stop_when_converged;
