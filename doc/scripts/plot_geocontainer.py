@@ -1,0 +1,43 @@
+"""Container velocity against time (doc/geocontainer_validation.md).
+
+    /usr/bin/python3 doc/scripts/plot_geocontainer.py out.png \
+        label1=dir1/monitors.csv label2=dir2/monitors.csv ...
+
+Plots -container_velocity_y (downward positive) of each run with the
+experiment as the paper reports it (accelerating until 0.4 s, 0.8 m/s at
+0.8 s) and the terminal velocity of the drag balance
+V = sqrt(2 g A (rho_s - rho_w)/(rho_w C_d b)) for C_d = 1 and 2.
+Uses Debian's python3-matplotlib.
+"""
+import csv
+import math
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+out = sys.argv[1]
+fig, ax = plt.subplots(figsize=(8, 4.5))
+for item in sys.argv[2:]:
+    label, path = item.split("=", 1)
+    t, v = [], []
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            t.append(float(row["time"]))
+            v.append(-float(row["container_velocity_y"]))
+    ax.plot(t, v, label=label)
+A, b, g, rs, rw = 25 / (1900 * 0.65), 0.271, 9.81, 1900.0, 1000.0
+for cd, style in ((1, ":"), (2, "-.")):
+    V = math.sqrt(2 * g * A * (rs - rw) / (rw * cd * b))
+    ax.axhline(V, color="gray", ls=style, lw=1,
+               label="drag balance, C_d = %g: %.2f m/s" % (cd, V))
+ax.plot([0.8], [0.8], "ks", label="experiment (paper): 0.8 m/s at 0.8 s")
+ax.axvline(0.4, color="k", lw=0.5, ls="--")
+ax.set_xlabel("time (s)")
+ax.set_ylabel("downward velocity of the sand (m/s)")
+ax.set_xlim(0, 1.3)
+ax.legend(fontsize=7, loc="upper right")
+ax.grid(lw=0.3)
+fig.tight_layout()
+fig.savefig(out, dpi=110)
