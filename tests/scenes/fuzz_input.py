@@ -213,7 +213,14 @@ def values_for(path, allowed, fixtures):
 # ---------------------------------------------------------------------------
 # The scene in which a parameter is read, and what else it needs.
 
-SMALL_BOX = ["Box lower corner=0.2, 0.15", "Box upper corner=0.25, 0.2"]
+def small_box(j):
+    """A one-cell box of its own for extra body j >= 2 of the water scene
+    (0.4 x 0.25 m, 5 cm cells): bodies fill in order, so a body entirely
+    inside an earlier one is refused, and each needs room of its own."""
+    i = j - 2
+    x, y = 0.15 + 0.05 * (i % 5), 0.15 + 0.05 * (i // 5)
+    return ["Box lower corner=%g, %g" % (x, y),
+            "Box upper corner=%g, %g" % (x + 0.05, y + 0.05)]
 
 
 def context(path):
@@ -265,7 +272,7 @@ def context(path):
     if k >= 2:
         sets.append("Bodies/Number of bodies=%d" % (k + 1))
         for j in range(2, k + 1):
-            sets += ["Bodies/Body %d/%s" % (j, s) for s in SMALL_BOX]
+            sets += ["Bodies/Body %d/%s" % (j, s) for s in small_box(j)]
     if rest.startswith("Column"):
         sets += [b + "Shape=column", b + "Column base corner=0.15, 0",
                  b + "Column width=0.05", b + "Column aspect ratio=1"]
