@@ -290,6 +290,7 @@ namespace fsgmpm
                 const double top
                   = geostatic ? surface_height_above(*body.shape,
                                                      particles.position[p],
+                                                     y_top,
                                                      step,
                                                      1e-6 * step)
                               : y_top;

@@ -224,7 +224,10 @@ namespace fsgmpm
     };
     if (wanted(container_monitor_names()))
       values.merge(container_monitors(particles, membrane, container));
-    values.merge(body_monitors(particles, n_bodies));
+    if (std::any_of(columns.begin(), columns.end(), [](const auto &name) {
+          return name.rfind("body_", 0) == 0;
+        }))
+      values.merge(body_monitors(particles, n_bodies));
     std::vector<double> row;
     for (const auto &name : columns)
       {

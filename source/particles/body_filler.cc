@@ -176,13 +176,11 @@ namespace fsgmpm
   double
   surface_height_above(const BodyShape<dim> &shape,
                        const Point<dim>     &x,
+                       const double          y_top,
                        const double          step,
                        const double          tolerance)
   {
     Assert(step > 0 && tolerance > 0, ExcMessage("Positive step needed."));
-    double y_top = -std::numeric_limits<double>::max();
-    for (const Point<dim> &p : shape.outline_points())
-      y_top = std::max(y_top, p[1]);
     // March up to the first point outside, then bisect the last step.
     Point<dim> probe = x;
     double     below = x[1];
@@ -222,10 +220,12 @@ namespace fsgmpm
   surface_height_above<2>(const BodyShape<2> &,
                           const Point<2> &,
                           const double,
+                          const double,
                           const double);
   template double
   surface_height_above<3>(const BodyShape<3> &,
                           const Point<3> &,
+                          const double,
                           const double,
                           const double);
   template unsigned int

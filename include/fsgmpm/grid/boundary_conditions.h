@@ -61,28 +61,7 @@ namespace fsgmpm
     void
     apply(const unsigned int node, Tensor<1, dim> &v) const
     {
-      const unsigned int idx = node_to_entry[node];
-      if (idx == BackgroundGrid<dim>::invalid)
-        return;
-      const Entry &e = entries[idx];
-      if (e.fixed)
-        {
-          v = Tensor<1, dim>();
-          return;
-        }
-      for (unsigned int k = 0; k < e.n_walls; ++k)
-        {
-          const double vn = v * e.normal[k];
-          if (e.type[k] == WallType::roller)
-            v -= vn * e.normal[k];
-          else if (vn > 0) // slip or friction wall: only when moving into it
-            {
-              Tensor<1, dim> vt  = v - vn * e.normal[k];
-              const double   vtn = vt.norm();
-              const double   red = e.friction[k] * vn;
-              v = (vtn > red) ? vt * (1. - red / vtn) : Tensor<1, dim>();
-            }
-        }
+      constrain(node, v, true);
     }
 
     /**
@@ -96,21 +75,7 @@ namespace fsgmpm
     void
     apply_kinematic(const unsigned int node, Tensor<1, dim> &v) const
     {
-      const unsigned int idx = node_to_entry[node];
-      if (idx == BackgroundGrid<dim>::invalid)
-        return;
-      const Entry &e = entries[idx];
-      if (e.fixed)
-        {
-          v = Tensor<1, dim>();
-          return;
-        }
-      for (unsigned int k = 0; k < e.n_walls; ++k)
-        {
-          const double vn = v * e.normal[k];
-          if (e.type[k] == WallType::roller || vn > 0)
-            v -= vn * e.normal[k];
-        }
+      constrain(node, v, false);
     }
 
     /// Remove the constrained components of a nodal vector (for the force
@@ -138,6 +103,41 @@ namespace fsgmpm
     }
 
   private:
+    /// apply() (with_friction) and apply_kinematic().
+    void
+    constrain(const unsigned int node,
+              Tensor<1, dim>    &v,
+              const bool         with_friction) const
+    {
+      const unsigned int idx = node_to_entry[node];
+      if (idx == BackgroundGrid<dim>::invalid)
+        return;
+      const Entry &e = entries[idx];
+      if (e.fixed)
+        {
+          v = Tensor<1, dim>();
+          return;
+        }
+      for (unsigned int k = 0; k < e.n_walls; ++k)
+        {
+          const double vn = v * e.normal[k];
+          if (e.type[k] == WallType::roller)
+            v -= vn * e.normal[k];
+          else if (vn > 0) // slip or friction wall: only when moving into it
+            {
+              if (!with_friction)
+                {
+                  v -= vn * e.normal[k];
+                  continue;
+                }
+              Tensor<1, dim> vt  = v - vn * e.normal[k];
+              const double   vtn = vt.norm();
+              const double   red = e.friction[k] * vn;
+              v = (vtn > red) ? vt * (1. - red / vtn) : Tensor<1, dim>();
+            }
+        }
+    }
+
     struct Entry
     {
       bool                            fixed   = false;

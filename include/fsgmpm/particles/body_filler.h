@@ -44,14 +44,16 @@ namespace fsgmpm
   /**
    * Height of the surface of @p shape above the inside point @p x: the
    * first y above x (same x, z) where the vertical line leaves the shape,
-   * to @p tolerance (bisection after steps of @p step). The depth of a
-   * point below its body's own top, for the geostatic stress under a
-   * sloped or curved surface.
+   * at most @p y_top (the shape's highest point), to @p tolerance
+   * (bisection after steps of @p step). The depth of a point below its
+   * body's own top, for the geostatic stress under a sloped or curved
+   * surface.
    */
   template <int dim>
   double
   surface_height_above(const BodyShape<dim> &shape,
                        const Point<dim>     &x,
+                       const double          y_top,
                        const double          step,
                        const double          tolerance);
 } // namespace fsgmpm
