@@ -103,6 +103,11 @@ namespace fsgmpm
     else
       MeshGeneration::read_gmsh(params.mesh_file, triangulation);
     grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
+    unsigned int n_fields = 1;
+    for (const auto &body : bodies)
+      n_fields = std::max(n_fields, body.velocity_field + 1);
+    if (n_fields > 1)
+      grid->set_velocity_fields(n_fields);
 
     // Every boundary id named in the wall conditions must exist.
     std::set<types::boundary_id> mesh_ids;
@@ -270,6 +275,9 @@ namespace fsgmpm
                   b,
                   particles,
                   taken);
+        for (unsigned int p = first; p < particles.size(); ++p)
+          particles.cell[p]
+            = grid->cell_in_field(particles.cell[p], body.velocity_field);
         taken.push_back(body.shape.get());
         using InitialStress = typename BodyDescription<dim>::InitialStress;
         if (body.initial_stress != InitialStress::none)
@@ -501,6 +509,7 @@ namespace fsgmpm
       Stages::p2g(*grid, particles, nodes);
       if (membrane)
         Stages::membrane_p2g(*grid, *membrane, nodes);
+      Stages::contact_normals(*grid, particles, nodes);
     });
 
     double dt_stable = 0;
@@ -568,6 +577,16 @@ namespace fsgmpm
     timed(grid_update_stage, [&] {
       grid_result = Stages::grid_update(
         *constraints, gravity, params.local_damping, dt, nodes);
+      // The contact's dissipation is not booked as damping work: the nodal
+      // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
+      // guard only objects to energy gained.
+      Stages::field_contact(*grid,
+                            *constraints,
+                            params.contact_friction,
+                            params.contact_volume_fraction,
+                            dt,
+                            true,
+                            nodes);
     });
     timed(g2p_stage, [&] {
       const double tau = params.flip_noise_relaxation_time;
@@ -579,6 +598,13 @@ namespace fsgmpm
     if (params.use_musl)
       timed(remap_stage, [&] {
         Stages::remap(*grid, particles, *constraints, nodes, membrane.get());
+        Stages::field_contact(*grid,
+                              *constraints,
+                              params.contact_friction,
+                              params.contact_volume_fraction,
+                              dt,
+                              false,
+                              nodes);
       });
     timed(nmd_stage, [&] {
       Stages::velocity_gradients(*grid, nodes, smoothing, particles);

@@ -41,6 +41,7 @@ namespace fsgmpm
     cell_min_altitude.resize(n);
     face_boundary_id.resize(n);
     node_positions.resize(dof_handler.n_dofs());
+    node_volume.assign(dof_handler.n_dofs(), 0.);
 
     min_altitude_global = std::numeric_limits<double>::max();
     max_altitude_global = 0;
@@ -91,6 +92,8 @@ namespace fsgmpm
 
         cell_origin[c] = x0;
         cell_volume[c] = std::abs(det) / factorial;
+        for (const unsigned int node : cell_nodes[c])
+          node_volume[node] += cell_volume[c] / n_vertices;
         Tensor<1, dim> grad0;
         for (unsigned int k = 0; k < dim; ++k)
           {
@@ -212,7 +215,7 @@ namespace fsgmpm
   {
     unsigned int best        = invalid;
     double       best_excess = -std::numeric_limits<double>::max();
-    for (unsigned int c = 0; c < n_cells(); ++c)
+    for (unsigned int c = 0; c < n_base_cells(); ++c)
       {
         const auto   l    = barycentric(c, x);
         const double lmin = *std::min_element(l.begin(), l.end());
@@ -224,6 +227,48 @@ namespace fsgmpm
       }
     return best;
   }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::set_velocity_fields(const unsigned int n)
+  {
+    AssertThrow(n_fields == 1 && n >= 1,
+                ExcMessage("The velocity fields of a grid are set once."));
+    const unsigned int nc = n_cells(), nn = n_nodes(),
+                       n_colours = colours.size();
+    n_fields                     = n;
+    auto replicate               = [&](auto &v) {
+      const auto base = v;
+      v.reserve(n * base.size());
+      for (unsigned int f = 1; f < n; ++f)
+        v.insert(v.end(), base.begin(), base.end());
+    };
+    replicate(node_positions);
+    replicate(node_volume);
+    replicate(cell_origin);
+    replicate(inverse_edge_matrix);
+    replicate(shape_gradients);
+    replicate(cell_volume);
+    replicate(cell_min_altitude);
+    replicate(face_boundary_id);
+    replicate(cell_nodes);
+    replicate(cell_neighbors);
+    replicate(cell_colour);
+    colours.resize(n * n_colours);
+    for (unsigned int f = 1; f < n; ++f)
+      for (unsigned int c = f * nc; c < (f + 1) * nc; ++c)
+        {
+          for (auto &i : cell_nodes[c])
+            i += f * nn;
+          for (auto &neighbor : cell_neighbors[c])
+            if (neighbor != invalid)
+              neighbor += f * nc;
+          cell_colour[c] += f * n_colours;
+          colours[cell_colour[c]].push_back(c);
+        }
+  }
+
+
 
   template class BackgroundGrid<2>;
   template class BackgroundGrid<3>;

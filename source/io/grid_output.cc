@@ -15,14 +15,23 @@ namespace fsgmpm
                  const NodalFields<dim>    &nodes,
                  const std::string         &file_name)
   {
-    const unsigned int          n = grid.n_nodes();
+    // With several velocity fields: their total mass and centre-of-mass
+    // velocity at each node of the mesh.
+    const unsigned int          n = grid.n_base_nodes();
     Vector<double>              mass(n);
     std::vector<Vector<double>> velocity(dim, Vector<double>(n));
     for (unsigned int i = 0; i < n; ++i)
       {
-        mass[i] = nodes.mass[i];
+        Tensor<1, dim> momentum;
+        for (unsigned int j = i; j < grid.n_nodes(); j += n)
+          {
+            mass[i] += nodes.mass[j];
+            momentum += nodes.mass[j] * nodes.velocity[j];
+          }
         for (unsigned int d = 0; d < dim; ++d)
-          velocity[d][i] = nodes.velocity[i][d];
+          velocity[d][i] = (grid.n_velocity_fields() == 1)
+                             ? nodes.velocity[i][d]
+                             : (mass[i] > 0 ? momentum[d] / mass[i] : 0.);
       }
     DataOut<dim> data_out;
     data_out.attach_dof_handler(grid.get_dof_handler());

@@ -132,7 +132,7 @@ namespace fsgmpm
 
     const auto   ref   = reference_particle_points<dim>(particles_per_cell);
     unsigned int added = 0, overlapped = 0;
-    for (unsigned int c = 0; c < grid.n_cells(); ++c)
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
       {
         const double v = grid.cell_volume[c] / ref.size();
         for (const auto &lambda : ref)

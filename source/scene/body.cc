@@ -125,6 +125,16 @@ namespace fsgmpm
                           Patterns::Double(0, 10),
                           "Lateral stress ratio for Initial stress = "
                           "geostatic (0 to 10).");
+        prm.declare_entry(
+          "Velocity field",
+          "0",
+          Patterns::Integer(0, 1),
+          "Velocity field of the body's points (0 or 1). Bodies in the same "
+          "field share one nodal velocity, so they stick where they touch "
+          "(the paper's model); bodies in different fields meet through "
+          "Contact (Bardenhagen et al. 2000): they cannot interpenetrate, "
+          "slide with Contact/Friction coefficient, and separate freely. "
+          "The membrane moves with field 0.");
         LinearElastic::declare_parameters(prm);
         MohrCoulomb::declare_parameters(prm);
         NewtonianFluid::declare_parameters(prm);
@@ -286,7 +296,13 @@ namespace fsgmpm
               : (initial == "hydrostatic"
                    ? BodyDescription<dim>::InitialStress::hydrostatic
                    : BodyDescription<dim>::InitialStress::none);
-        body.k0                 = prm.get_double("K0");
+        body.k0             = prm.get_double("K0");
+        body.velocity_field = prm.get_integer("Velocity field");
+        AssertThrow(!body.fills_membrane || body.velocity_field == 0,
+                    ExcMessage(body.path
+                               + "/Shape = membrane needs Velocity field = 0: "
+                                 "the membrane and its fill move with field "
+                                 "0."));
         const std::string model = prm.get("Material model");
         if (model == "linear elastic")
           body.material = LinearElastic::create(prm, body.density, body.path);

@@ -115,6 +115,24 @@ namespace fsgmpm
         "so that the sub-cell velocity noise FLIP keeps decays over tau "
         "seconds whatever the time step (resolved motion is untouched); 0: "
         "pure FLIP (paper Eq. 19).");
+      prm.declare_entry(
+        "Contact friction coefficient",
+        "0",
+        Patterns::Double(0),
+        "Coulomb friction coefficient where bodies of different Bodies/Body "
+        "N/Velocity field meet (multi-field contact, Bardenhagen et al. "
+        "2000): 0 frictionless, a large value sticks while in contact. "
+        "Unused when all bodies share one field.");
+      prm.declare_entry(
+        "Contact volume fraction",
+        "0.9",
+        Patterns::Double(0, 1),
+        "Multi-field contact acts at a node only where the points of both "
+        "fields fill at least this fraction of the node's volume (0 to 1): "
+        "bodies that merely share a node across a gap of up to a cell are "
+        "not yet in contact. 0: Bardenhagen's original test (both fields "
+        "have mass), which stops bodies early and, with FLIP, returns more "
+        "energy than the impact took (doc/geocontainer_validation.md).");
       prm.declare_entry("Gravity",
                         "0, -9.81",
                         Patterns::List(Patterns::Double()),
@@ -323,6 +341,8 @@ namespace fsgmpm
     use_musl                   = (prm.get("Update scheme") == "MUSL");
     use_apic                   = (prm.get("Velocity transfer") == "APIC");
     flip_noise_relaxation_time = prm.get_double("FLIP noise relaxation time");
+    contact_friction           = prm.get_double("Contact friction coefficient");
+    contact_volume_fraction    = prm.get_double("Contact volume fraction");
     gravity = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     AssertThrow(gravity.norm() <= 1e5,
                 ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "

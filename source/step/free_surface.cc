@@ -21,16 +21,22 @@ namespace fsgmpm
 
       // phi_i = sum_p N_i(x_p) V_p / Vbar_i, Vbar_i the lumped volume of the
       // node's non-empty cells: the volume-fraction form of Eqs. (31)-(33),
-      // counting the points of every material.
+      // counting the points of every material and of every velocity field
+      // (on the base node: water beside a bag in another field is not at a
+      // free surface). A cell occupied in two fields counts once in Vbar_i.
       auto &phi = smoothing.volume_fraction;
       auto &vol = smoothing.lumped_volume;
       if (phi.size() != grid.n_nodes())
         {
           phi.assign(grid.n_nodes(), 0.);
           vol.assign(grid.n_nodes(), 0.);
+          smoothing.cell_counted.assign(grid.n_base_cells(), 0u);
         }
       for (const unsigned int i : nodes.active_nodes)
-        phi[i] = vol[i] = 0.;
+        phi[grid.base_node(i)] = vol[grid.base_node(i)] = 0.;
+      const unsigned int stamp = ++smoothing.cell_count_stamp;
+      // Copies of a cell have different colours, so the check-and-set of
+      // cell_counted and the sums on base nodes are race free.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         double share[dim + 1] = {};
         for (unsigned int p = particles.cell_start[c];
@@ -41,16 +47,27 @@ namespace fsgmpm
             for (unsigned int k = 0; k < dim + 1; ++k)
               share[k] += lambda[k] * particles.volume[p];
           }
+        const unsigned int base_cell = grid.cell_in_field(c, 0);
+        const bool         first = (smoothing.cell_counted[base_cell] != stamp);
+        smoothing.cell_counted[base_cell] = stamp;
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
-            const unsigned int i = grid.cell_nodes[c][k];
+            const unsigned int i = grid.base_node(grid.cell_nodes[c][k]);
             phi[i] += share[k];
-            vol[i] += grid.cell_volume[c] / (dim + 1);
+            if (first)
+              vol[i] += grid.cell_volume[c] / (dim + 1);
           }
       });
+      // Divide each base node once (zeroing its volume marks it done).
       for (const unsigned int i : nodes.active_nodes)
-        if (vol[i] > 0)
-          phi[i] /= vol[i];
+        {
+          const unsigned int b = grid.base_node(i);
+          if (vol[b] > 0)
+            {
+              phi[b] /= vol[b];
+              vol[b] = 0;
+            }
+        }
 
       std::vector<std::pair<unsigned int, unsigned int>> flagged(
         particles.occupied_cells.size(), {0, 0});
@@ -72,7 +89,8 @@ namespace fsgmpm
                     = grid.barycentric(c, particles.position[p]);
                   double phi_p = 0;
                   for (unsigned int k = 0; k < dim + 1; ++k)
-                    phi_p += lambda[k] * phi[grid.cell_nodes[c][k]];
+                    phi_p
+                      += lambda[k] * phi[grid.base_node(grid.cell_nodes[c][k])];
                   const bool free = (phi_p <= o.free_surface_threshold);
                   particles.free_surface[p] = free;
                   if (free)

@@ -59,6 +59,59 @@ namespace fsgmpm
       return node_positions.size();
     }
 
+    // ---- velocity fields (multi-field contact) ---------------------------
+    /**
+     * Give the grid @p n_fields velocity fields (Bardenhagen et al. 2000):
+     * field f > 0 is a copy of the mesh whose cells and nodes are numbered
+     * after those of field f - 1 (cell c of field f is c + f n_base_cells(),
+     * its nodes i + f n_base_nodes()). A point of field f lives in that
+     * field's cells, so every stage of the step transfers it to its own
+     * field's nodes without knowing about fields; the contact stage couples
+     * the fields where they meet. Call once, before anything is sized by
+     * n_cells() or n_nodes(). Copies get colours of their own, so a scatter
+     * may also add to the base node (i mod n_base_nodes()) without races.
+     */
+    void
+    set_velocity_fields(const unsigned int n_fields);
+
+    unsigned int
+    n_velocity_fields() const
+    {
+      return n_fields;
+    }
+
+    /// Cells and nodes of one field (the deal.II mesh's).
+    unsigned int
+    n_base_cells() const
+    {
+      return n_cells() / n_fields;
+    }
+
+    unsigned int
+    n_base_nodes() const
+    {
+      return n_nodes() / n_fields;
+    }
+
+    unsigned int
+    field_of_cell(const unsigned int c) const
+    {
+      return c / n_base_cells();
+    }
+
+    /// The cell of field @p f over the same triangle as cell @p c.
+    unsigned int
+    cell_in_field(const unsigned int c, const unsigned int f) const
+    {
+      return c % n_base_cells() + f * n_base_cells();
+    }
+
+    unsigned int
+    base_node(const unsigned int i) const
+    {
+      return i % n_base_nodes();
+    }
+
     /// Barycentric coordinates of @p x with respect to cell @p c.
     std::array<double, dim + 1>
     barycentric(const unsigned int c, const Point<dim> &x) const
@@ -85,8 +138,9 @@ namespace fsgmpm
       return x;
     }
 
-    /// Index of the cell containing @p x by testing all cells (slow; used
-    /// only as a fallback and in tests). Returns invalid if none does.
+    /// Index of the cell of field 0 containing @p x by testing all cells
+    /// (slow; used only as a fallback and in tests). Returns invalid if none
+    /// does.
     unsigned int
     find_cell_brute_force(const Point<dim> &x, const double tolerance) const;
 
@@ -112,6 +166,8 @@ namespace fsgmpm
 
     // ---- per-node data -------------------------------------------------
     std::vector<Point<dim>> node_positions;
+    /// Lumped volume of the node: sum over its cells of V_c / (dim + 1).
+    std::vector<double> node_volume;
 
     // ---- per-cell data (index = active cell index) ---------------------
     std::vector<std::array<unsigned int, dim + 1>> cell_nodes;
@@ -137,6 +193,7 @@ namespace fsgmpm
     std::vector<unsigned int>              cell_colour;
 
   private:
+    unsigned int       n_fields = 1;
     Triangulation<dim> triangulation;
     FE_SimplexP<dim>   fe;
     DoFHandler<dim>    dof_handler;

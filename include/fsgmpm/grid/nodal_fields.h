@@ -28,6 +28,8 @@ namespace fsgmpm
       velocity.assign(n_nodes, Tensor<1, dim>());
       acceleration.assign(n_nodes, Tensor<1, dim>());
       added_mass.assign(n_nodes, SymmetricTensor<2, dim>());
+      contact_normal.assign(n_nodes, Tensor<1, dim>());
+      contact_volume.assign(n_nodes, 0.);
       active_stamp.assign(n_nodes, 0u);
       active_nodes.clear();
       stamp = 0;
@@ -80,6 +82,13 @@ namespace fsgmpm
     /// it (along the cables): a = (m I + added_mass)^-1 F. It slows the
     /// node's acceleration but carries no weight and no momentum.
     std::vector<SymmetricTensor<2, dim>> added_mass;
+    /// Multi-field contact: at a node of field 0, the unnormalised normal
+    /// from field 0 towards field 1 (grad m_1 - grad m_0), set by
+    /// Stages::contact_normals.
+    std::vector<Tensor<1, dim>> contact_normal;
+    /// Multi-field contact: at a node of field 0, sum_p N_i(x_p) V_p over
+    /// the points of all fields (the volume the materials fill there).
+    std::vector<double> contact_volume;
 
     std::vector<unsigned int> active_nodes;
     std::vector<unsigned int> active_stamp;

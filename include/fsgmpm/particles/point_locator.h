@@ -42,7 +42,11 @@ namespace fsgmpm
             break;
           c = next;
         }
-      return grid.find_cell_brute_force(x, tolerance);
+      // The walk stays in the guess's velocity field; so does the search.
+      const unsigned int found = grid.find_cell_brute_force(x, tolerance);
+      return found == BackgroundGrid<dim>::invalid
+               ? found
+               : grid.cell_in_field(found, grid.field_of_cell(guess));
     }
 
     static constexpr unsigned int max_walk_steps = 64;

@@ -40,6 +40,8 @@ namespace fsgmpm
     };
     InitialStress initial_stress;
     double        k0;
+    /// Velocity field of the body's points (BackgroundGrid's copies).
+    unsigned int velocity_field = 0;
     /// NMD, ANP and free-surface switches of the body's material.
     MaterialOptions options;
 

@@ -40,7 +40,11 @@ namespace fsgmpm
     bool         use_musl;
     bool         use_apic;
     /// FLIP-PIC blend: sub-cell noise decays over this time (s; 0: FLIP).
-    double         flip_noise_relaxation_time;
+    double flip_noise_relaxation_time;
+    /// Coulomb friction between velocity fields (multi-field contact).
+    double contact_friction;
+    /// Contact acts where both fields fill this fraction of a node.
+    double         contact_volume_fraction;
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
     bool           stop_when_converged;

@@ -53,8 +53,12 @@ namespace fsgmpm
 
     std::vector<std::vector<double>> numerator, denominator;
     std::vector<double>              volume_fraction, lumped_volume;
-    std::vector<Tensor<2, dim>>      velocity_gradient;
-    unsigned int                     n_nodes = 0;
+    /// Free-surface detection: base cells already counted in lumped_volume
+    /// this call (a cell occupied in two velocity fields counts once).
+    std::vector<unsigned int>   cell_counted;
+    unsigned int                cell_count_stamp = 0;
+    std::vector<Tensor<2, dim>> velocity_gradient;
+    unsigned int                n_nodes = 0;
   };
 } // namespace fsgmpm
 

@@ -62,6 +62,37 @@ namespace fsgmpm
                 const double                 dt,
                 NodalFields<dim>            &nodes);
 
+    /// Multi-field contact, part 1 (once per step, after p2g and
+    /// membrane_p2g): at every node of field 0 the contact normal, field
+    /// 0's outward normal from its smoothed nodal mass
+    /// (NodalFields::contact_normal), and the volume of the points of both
+    /// fields (NodalFields::contact_volume). Nothing to do with one field.
+    template <int dim>
+    void
+    contact_normals(const BackgroundGrid<dim> &grid,
+                    const ParticleStore<dim>  &particles,
+                    NodalFields<dim>          &nodes);
+
+    /// Multi-field contact, part 2 (after grid_update and after remap;
+    /// Bardenhagen et al. 2000, 2001): at a node where both fields have
+    /// mass, the points fill at least @p volume_fraction of the node's
+    /// volume, and the fields approach, (v_0 - v_cm) . n > 0, their normal
+    /// velocities become the centre of mass's and their tangential relative
+    /// velocity is reduced by Coulomb friction @p friction (stick if that
+    /// stops it); separating fields are left alone. Momentum is conserved
+    /// (the walls act again after). With @p update_acceleration the nodal
+    /// accelerations follow the velocity change (FLIP's Eq. 19). Returns
+    /// the nodal kinetic energy the contact removed (>= 0).
+    template <int dim>
+    double
+    field_contact(const BackgroundGrid<dim>   &grid,
+                  const NodalConstraints<dim> &constraints,
+                  const double                 friction,
+                  const double                 volume_fraction,
+                  const double                 dt,
+                  const bool                   update_acceleration,
+                  NodalFields<dim>            &nodes);
+
     /// Stage 3 (Eq. 19): FLIP v_p += dt sum_i N_i(x_p) a_i, then blended
     /// with the fraction @p pic_fraction of PIC's v_p = sum_i N_i(x_p) v_i
     /// (0: pure FLIP); or, if the points carry an affine velocity, APIC:

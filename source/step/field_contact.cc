@@ -1,0 +1,163 @@
+#include <fsgmpm/step/cell_loops.h>
+#include <fsgmpm/step/stages.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  namespace Stages
+  {
+    template <int dim>
+    void
+    contact_normals(const BackgroundGrid<dim> &grid,
+                    const ParticleStore<dim>  &particles,
+                    NodalFields<dim>          &nodes)
+    {
+      if (grid.n_velocity_fields() == 1)
+        return;
+      for (const unsigned int i : nodes.active_nodes)
+        {
+          nodes.contact_normal[grid.base_node(i)] = Tensor<1, dim>();
+          nodes.contact_volume[grid.base_node(i)] = 0;
+        }
+      // The points' volume at each node, both fields together (copies of a
+      // cell have different colours: no race on the base node).
+      CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
+        double share[dim + 1] = {};
+        for (unsigned int p = particles.cell_start[c];
+             p < particles.cell_start[c + 1];
+             ++p)
+          {
+            const auto lambda = grid.barycentric(c, particles.position[p]);
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              share[k] += lambda[k] * particles.volume[p];
+          }
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          nodes.contact_volume[grid.base_node(grid.cell_nodes[c][k])]
+            += share[k];
+      });
+      // n_i = -sum_c V_c grad(rho_0)|_c over the occupied cells around node
+      // i, rho_0 = m_0,j / V_j field 0's nodal density interpolated
+      // linearly: the outward normal of field 0 (the container, the base),
+      // from its smoothed nodal mass rather than from the cells' own masses
+      // (Bardenhagen's sum_c M_c grad N_i^c), whose direction jumps with
+      // every point that crosses an edge; and field 0's alone, not the
+      // difference of both fields' gradients, which tilts at the corners of
+      // the other body and brakes it there. A block sliding frictionless on
+      // an incline (field_contact; 1 cm cells, 4 points per cell) moved 7.2
+      // mm with Bardenhagen's normal, 18.8 mm with the smoothed difference
+      // and 24.53 mm with this one, against 24.525 mm exact.
+      std::vector<bool> seen(grid.n_base_cells(), false);
+      for (const unsigned int c : particles.occupied_cells)
+        {
+          const unsigned int cb = grid.cell_in_field(c, 0);
+          if (seen[cb])
+            continue;
+          seen[cb] = true;
+          Tensor<1, dim> gradient;
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            {
+              const unsigned int i = grid.cell_nodes[cb][k];
+              gradient -= (nodes.mass[i] / grid.node_volume[i])
+                          * grid.shape_gradients[cb][k];
+            }
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            nodes.contact_normal[grid.cell_nodes[cb][k]]
+              += grid.cell_volume[cb] * gradient;
+        }
+    }
+
+
+
+    template <int dim>
+    double
+    field_contact(const BackgroundGrid<dim>   &grid,
+                  const NodalConstraints<dim> &constraints,
+                  const double                 friction,
+                  const double                 volume_fraction,
+                  const double                 dt,
+                  const bool                   update_acceleration,
+                  NodalFields<dim>            &nodes)
+    {
+      if (grid.n_velocity_fields() == 1)
+        return 0;
+
+      const unsigned int n_base  = grid.n_base_nodes();
+      double             removed = 0;
+      for (const unsigned int i : nodes.active_nodes)
+        {
+          if (i >= n_base)
+            continue;
+          const unsigned int j  = i + n_base;
+          const double       m0 = nodes.mass[i], m1 = nodes.mass[j];
+          if (m0 <= 0 || m1 <= 0)
+            continue;
+          const double norm = nodes.contact_normal[i].norm();
+          if (norm == 0)
+            continue;
+          // Contact only where the two materials together fill the node: a
+          // node that both fields merely reach (a gap of up to a cell) would
+          // stop the bodies early and, with FLIP, return more energy than
+          // it took (the discs of field_contact: +44% without the check).
+          if (nodes.contact_volume[i] < volume_fraction * grid.node_volume[i])
+            continue;
+          const Tensor<1, dim> n    = nodes.contact_normal[i] / norm;
+          Tensor<1, dim>      &v0   = nodes.velocity[i];
+          Tensor<1, dim>      &v1   = nodes.velocity[j];
+          const Tensor<1, dim> v_cm = (m0 * v0 + m1 * v1) / (m0 + m1);
+          const Tensor<1, dim> dv   = v0 - v_cm;
+          const double         dn   = dv * n;
+          if (dn <= 0)
+            continue; // separating or sliding apart: no contact force
+          // Field 0's velocity change: the normal approach removed, the
+          // tangential slip reduced by mu times the normal impulse (stick if
+          // that is enough to stop it). Field 1 takes the opposite momentum.
+          const Tensor<1, dim> slip = dv - dn * n;
+          const double         s    = slip.norm();
+          const Tensor<1, dim> change
+            = (s <= friction * dn) ? -dv : -dn * n - (friction * dn / s) * slip;
+          const Tensor<1, dim> old0 = v0, old1 = v1;
+          v0 += change;
+          v1 -= (m0 / m1) * change;
+          constraints.apply_kinematic(i, v0);
+          constraints.apply_kinematic(j, v1);
+          removed += 0.5
+                     * (m0 * (old0.norm_square() - v0.norm_square())
+                        + m1 * (old1.norm_square() - v1.norm_square()));
+          if (update_acceleration)
+            {
+              nodes.acceleration[i] += (v0 - old0) / dt;
+              nodes.acceleration[j] += (v1 - old1) / dt;
+            }
+        }
+      return removed;
+    }
+
+
+
+    template void
+    contact_normals<2>(const BackgroundGrid<2> &,
+                       const ParticleStore<2> &,
+                       NodalFields<2> &);
+    template void
+    contact_normals<3>(const BackgroundGrid<3> &,
+                       const ParticleStore<3> &,
+                       NodalFields<3> &);
+    template double
+    field_contact<2>(const BackgroundGrid<2> &,
+                     const NodalConstraints<2> &,
+                     const double,
+                     const double,
+                     const double,
+                     const bool,
+                     NodalFields<2> &);
+    template double
+    field_contact<3>(const BackgroundGrid<3> &,
+                     const NodalConstraints<3> &,
+                     const double,
+                     const double,
+                     const double,
+                     const bool,
+                     NodalFields<3> &);
+  } // namespace Stages
+} // namespace fsgmpm
