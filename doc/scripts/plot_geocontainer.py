@@ -27,6 +27,7 @@ for item in sys.argv[2:]:
             t.append(float(row["time"]))
             v.append(-float(row["container_velocity_y"]))
     ax.plot(t, v, label=label)
+    ax.get_lines()[-1].set_xdata(t)
 A, b, g, rs, rw = 25 / (1900 * 0.65), 0.271, 9.81, 1900.0, 1000.0
 for cd, style in ((1, ":"), (2, "-.")):
     V = math.sqrt(2 * g * A * (rs - rw) / (rw * cd * b))
@@ -36,7 +37,8 @@ ax.plot([0.8], [0.8], "ks", label="experiment (paper): 0.8 m/s at 0.8 s")
 ax.axvline(0.4, color="k", lw=0.5, ls="--")
 ax.set_xlabel("time (s)")
 ax.set_ylabel("downward velocity of the sand (m/s)")
-ax.set_xlim(0, 1.3)
+ax.set_xlim(0, max(1.3, max(max(line.get_xdata(), default=0)
+                            for line in ax.get_lines())))
 ax.legend(fontsize=7, loc="upper right")
 ax.grid(lw=0.3)
 fig.tight_layout()

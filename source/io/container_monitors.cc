@@ -1,7 +1,9 @@
 #include <fsgmpm/io/container_monitors.h>
 #include <fsgmpm/particles/body_shape.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fsgmpm
 {
@@ -14,7 +16,9 @@ namespace fsgmpm
                                                    "container_tilt",
                                                    "soil_area",
                                                    "soil_points_outside",
-                                                   "water_points_inside"};
+                                                   "water_points_inside",
+                                                   "water_inside_depth",
+                                                   "soil_outside_distance"};
     return names;
   }
 
@@ -52,7 +56,26 @@ namespace fsgmpm
         }
     double tilt = 0.5 * std::atan2(2 * ixy, ixx - iyy) * 180. / M_PI;
 
+    // Distance of a point from the membrane polygon (how far an offending
+    // point has crossed it: within a cell is the resolution of grid-node
+    // coupling, more is a leak).
+    const auto distance
+      = [](const std::vector<Point<2>> &poly, const Point<2> &x) {
+          double d2 = std::numeric_limits<double>::max();
+          for (unsigned int k = 0; k < poly.size(); ++k)
+            {
+              const Point<2>    &a = poly[k];
+              const Tensor<1, 2> e = poly[(k + 1) % poly.size()] - a;
+              const double       t
+                = std::clamp(((x - a) * e) / std::max(e.norm_square(), 1e-300),
+                             0.,
+                             1.);
+              d2 = std::min(d2, (x - (a + t * e)).norm_square());
+            }
+          return std::sqrt(d2);
+        };
     double soil_outside = 0, water_inside = 0;
+    double soil_outside_distance = 0, water_inside_depth = 0;
     if (membrane != nullptr && (dim == 2 || !membrane->rings.empty()))
       {
         std::vector<Point<2>> poly;
@@ -60,14 +83,21 @@ namespace fsgmpm
           poly.emplace_back(x[0], x[1]);
         for (unsigned int p = 0; p < particles.size(); ++p)
           {
-            const bool inside
-              = inside_polygon(poly,
-                               Point<2>(particles.position[p][0],
-                                        particles.position[p][1]));
-            if (particles.body_id[p] == container)
-              soil_outside += !inside;
-            else
-              water_inside += inside;
+            const Point<2> x(particles.position[p][0],
+                             particles.position[p][1]);
+            const bool     inside = inside_polygon(poly, x);
+            if (particles.body_id[p] == container && !inside)
+              {
+                ++soil_outside;
+                soil_outside_distance
+                  = std::max(soil_outside_distance, distance(poly, x));
+              }
+            else if (particles.body_id[p] != container && inside)
+              {
+                ++water_inside;
+                water_inside_depth
+                  = std::max(water_inside_depth, distance(poly, x));
+              }
           }
       }
     if (dim == 3)
@@ -94,7 +124,9 @@ namespace fsgmpm
             {"container_tilt", tilt},
             {"soil_area", volume},
             {"soil_points_outside", soil_outside},
-            {"water_points_inside", water_inside}};
+            {"water_points_inside", water_inside},
+            {"water_inside_depth", water_inside_depth},
+            {"soil_outside_distance", soil_outside_distance}};
   }
 
 

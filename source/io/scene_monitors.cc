@@ -28,7 +28,8 @@ namespace fsgmpm
                         "enclosed_area|fluid_volume|particles_outside|"
                         "container_centre_x|container_centre_y|"
                         "container_velocity_y|container_tilt|soil_area|"
-                        "soil_points_outside|water_points_inside|body_mass|"
+                        "soil_points_outside|water_points_inside|"
+                        "water_inside_depth|soil_outside_distance|body_mass|"
                         "body_kinetic_energy"),
                       "Extra columns of monitors.csv: front_position (surge "
                       "front from the wall, bottom cell row) and "
@@ -54,7 +55,10 @@ namespace fsgmpm
                       "soil_area (its point volumes, per metre in 3D), "
                       "soil_points_outside (its points outside the "
                       "membrane), water_points_inside (other bodies' points "
-                      "inside it). body_mass and body_kinetic_energy give "
+                      "inside it), water_inside_depth and "
+                      "soil_outside_distance (m: how far the deepest of "
+                      "those points lies across the membrane). body_mass "
+                      "and body_kinetic_energy give "
                       "one column per body: body_mass_0, body_mass_1, ...");
     prm.declare_entry("Container body",
                       "0",

@@ -1,25 +1,30 @@
 // Geocontainer drop, coarse (issue 12): prm/geocontainer_polygon.prm and
 // prm/geocontainer_ellipse.prm at 4 cm cells with weakly compressible water
-// (K = 2.13e7 Pa as shipped) and FLIP noise relaxation 0.01 s, the first 0.2 s:
-// sand in its membrane, falling into the water. Asserted over every step:
+// (K = 2.13e7 Pa as shipped), FLIP noise relaxation 0.01 s and the water in
+// its own velocity field (frictionless contact with the bag), the first
+// 0.2 s: sand in its membrane, falling into the water. Asserted over every
+// step:
 // - each body's mass is the same as at the start to 1e-12 (relative);
-// - no water point inside the membrane (measured 0);
-// - sand points outside it: at most 2 of 400 (measured 1 and 0:
-//   a point within 6 mm of a membrane chord crosses it; the 2 cm scene has
-//   1-3 of 1 620; doc/geocontainer_validation.md);
-// - the sand's area within 3% of its start (measured within 0.3%);
+// - water points inside the membrane: at most 3, none deeper than 5 mm
+//   (measured at most 1 point, 1.3 and 1.6 mm deep: contact acts on grid
+//   nodes, so a point may cross the membrane by a fraction of a cell);
+// - sand points outside it: at most 2 of 400 (measured 1 and 1: a point
+//   within 6 mm of a membrane chord crosses it;
+//   doc/geocontainer_validation.md);
+// - the sand's area within 3% of its start (measured within 0.4%);
 // - the run is stable and loses no point;
 // and that the container accelerates downward: its mass-weighted vertical
 // velocity at 0.05, 0.1 and 0.2 s is negative and growing in magnitude
-// (measured -0.29, -0.42, -0.46 m/s for the polygon, -0.17, -0.30, -0.40
+// (measured -0.36, -0.54, -0.69 m/s for the polygon, -0.25, -0.39, -0.55
 // for the ellipse: the polygon's pointed bottom enters faster, as in the
-// paper's Fig. 15). About 30 s on 2 cores.
+// paper's Fig. 15). About 50 s on 2 cores.
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -68,8 +73,9 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
       ASSERT_GT(start.at("soil_area"), 0.);
       EXPECT_EQ(start.at("water_points_inside"), 0.) << scene;
       EXPECT_EQ(start.at("soil_points_outside"), 0.) << scene;
-      unsigned int                           max_outside = 0;
-      double                                 worst_area  = 0;
+      unsigned int                           max_outside = 0, max_inside = 0;
+      double                                 max_depth  = 0;
+      double                                 worst_area = 0;
       std::vector<std::pair<double, double>> velocity; // at 0.05, 0.1, 0.2
       const std::vector<double>              times = {0.05, 0.1, 0.2};
       for (bool running = true; running;)
@@ -79,8 +85,9 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
           for (const std::string body : {"body_mass_0", "body_mass_1"})
             ASSERT_NEAR(m.at(body) / start.at(body), 1., 1e-12)
               << scene << " " << body << " at t = " << sim.get_time();
-          ASSERT_EQ(m.at("water_points_inside"), 0.)
-            << scene << " at t = " << sim.get_time();
+          max_inside
+            = std::max<unsigned int>(max_inside, m.at("water_points_inside"));
+          max_depth = std::max(max_depth, m.at("water_inside_depth"));
           max_outside
             = std::max<unsigned int>(max_outside, m.at("soil_points_outside"));
           worst_area
@@ -94,6 +101,8 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
         << scene << ": " << sim.get_diagnosis();
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u) << scene;
       EXPECT_LE(max_outside, 2u) << scene;
+      EXPECT_LE(max_inside, 3u) << scene;
+      EXPECT_LT(max_depth, 0.005) << scene;
       EXPECT_LT(worst_area, 0.03) << scene;
       ASSERT_EQ(velocity.size(), 3u) << scene;
       EXPECT_LT(velocity[0].second, 0.) << scene;
@@ -103,7 +112,81 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
       std::cout << scene << ": v_y = " << velocity[0].second << ", "
                 << velocity[1].second << ", " << velocity[2].second
                 << " m/s at 0.05, 0.1, 0.2 s; sand points outside <= "
-                << max_outside << ", sand area within " << worst_area
-                << std::endl;
+                << max_outside << ", water points inside <= " << max_inside
+                << " (at most " << max_depth << " m deep), sand area within "
+                << worst_area << std::endl;
+    }
+}
+
+
+
+// Validation (label validation, not in the default run): both shipped
+// scenes as shipped (2 cm, 16 and 4 points per cell, to 1.7 s), from the
+// water surface towards the tank floor. The experiment (paper Section
+// 5.2): 0.8 m/s at 0.8 s, on the floor at 1.1 s. Our scenes sink at 0.47
+// and 0.48 m/s at 0.8 s; the polygon lands (its velocity turns upward) at
+// 1.64 s, the ellipse is 6 cm above the floor at 1.6 s and still sinking at
+// 1.7 s: outside the 25% band, for the reasons measured in
+// doc/geocontainer_validation.md, section 5. Asserted against our
+// measurement, so that a change of the result shows: the velocity at 0.8 s
+// within 0.05 m/s, the landing time within 0.05 s (the ellipse: none by
+// 1.7 s), the membrane's lowest node at 1.6 s within 1 cm (measured 1.45
+// and 6.19 cm), masses to 1e-12, at most 20 water points inside the
+// membrane and none deeper than 15 mm (measured 14 and 11 mm polygon, 7 and
+// 7 mm ellipse: contact on grid nodes, 2 cm cells), a stable run. About
+// 15 min per shape on 2 cores.
+TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
+{
+  struct Expected
+  {
+    std::string scene;
+    double      v_08, landing, lowest_16;
+  };
+  for (const Expected &e :
+       {Expected{"geocontainer_polygon.prm", -0.466, 1.638, 0.0145},
+        Expected{"geocontainer_ellipse.prm", -0.478, -1, 0.0619}})
+    {
+      auto prm = test_tools::make_parameters_from_scene(e.scene);
+      prm->enter_subsection("Output");
+      prm->set("Directory", "output_geocontainer_validation");
+      prm->set("Quiet", true);
+      prm->leave_subsection();
+      Simulator<2> sim(*prm);
+      const auto   start = monitors(sim);
+      double       v_08 = 0, landing = -1, lowest_16 = -1, max_depth = 0;
+      unsigned int max_inside = 0;
+      for (bool running = true; running;)
+        {
+          running      = sim.advance();
+          const auto m = monitors(sim);
+          for (const std::string body : {"body_mass_0", "body_mass_1"})
+            ASSERT_NEAR(m.at(body) / start.at(body), 1., 1e-12)
+              << e.scene << " " << body << " at t = " << sim.get_time();
+          max_inside
+            = std::max<unsigned int>(max_inside, m.at("water_points_inside"));
+          max_depth = std::max(max_depth, m.at("water_inside_depth"));
+          if (v_08 == 0 && sim.get_time() >= 0.8 * (1 - 1e-12))
+            v_08 = m.at("container_velocity_y");
+          if (landing < 0 && sim.get_time() > 1.
+              && m.at("container_velocity_y") >= 0)
+            landing = sim.get_time();
+          if (lowest_16 < 0 && sim.get_time() >= 1.6 * (1 - 1e-12))
+            {
+              lowest_16 = 1e300;
+              for (const auto &x : sim.get_membrane()->position)
+                lowest_16 = std::min(lowest_16, x[1]);
+            }
+        }
+      std::cout << e.scene << ": v_y(0.8 s) = " << v_08 << " m/s, landing at "
+                << landing << " s (-1: none), lowest membrane node at 1.6 s "
+                << lowest_16 << " m; water points inside <= " << max_inside
+                << " (at most " << max_depth << " m deep)" << std::endl;
+      EXPECT_EQ(sim.get_termination(), "end_time")
+        << e.scene << ": " << sim.get_diagnosis();
+      EXPECT_NEAR(v_08, e.v_08, 0.05) << e.scene;
+      EXPECT_NEAR(landing, e.landing, 0.05) << e.scene;
+      EXPECT_NEAR(lowest_16, e.lowest_16, 0.01) << e.scene;
+      EXPECT_LE(max_inside, 20u) << e.scene;
+      EXPECT_LT(max_depth, 0.015) << e.scene;
     }
 }

@@ -21,7 +21,9 @@ namespace fsgmpm
    *   axis of their second moment of area from the x axis;
    * - soil_area: the container body's point volumes (m^2; per metre in 3D);
    * - soil_points_outside: its points outside the closed membrane;
-   * - water_points_inside: points of the other bodies inside it.
+   * - water_points_inside: points of the other bodies inside it;
+   * - water_inside_depth, soil_outside_distance: the largest distance from
+   *   the membrane of those points (how far they crossed it).
    * Without a membrane the last two are zero.
    */
   template <int dim>
