@@ -19,13 +19,15 @@ namespace fsgmpm
    * The explicit MPM step as a fixed sequence of named stages (paper Fig. 1,
    * Eqs. 17-21). A stage knows nothing about the scene; the Simulator calls
    *
-   *   MUSL (default):  p2g -> grid_update -> g2p -> remap
+   *   MUSL (default):  p2g (-> contact_normals) -> grid_update
+   *                    (-> field_contact) -> g2p -> remap (-> field_contact)
    *                    -> velocity_gradients (-> store_affine_velocity,
    *                    APIC only) -> nmd -> stress_update
    *                    -> detect_free_surface
    *                    -> average_nodal_pressure -> update_positions
    *                    -> relocate
    *   USL:             the same without remap
+   *   (field_contact and contact_normals act only with two velocity fields)
    *
    * Particles must be sorted by cell (ParticleStore::sort_by_cell) before
    * p2g. Scatters run in parallel over the cells of one colour, so they are
