@@ -23,15 +23,7 @@ namespace fsgmpm
       // The points' volume at each node, both fields together (copies of a
       // cell have different colours: no race on the base node).
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        double share[dim + 1] = {};
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
-             ++p)
-          {
-            const auto lambda = grid.barycentric(c, particles.position[p]);
-            for (unsigned int k = 0; k < dim + 1; ++k)
-              share[k] += lambda[k] * particles.volume[p];
-          }
+        const auto share = CellLoops::volume_shares(grid, particles, c);
         for (unsigned int k = 0; k < dim + 1; ++k)
           nodes.contact_volume[grid.base_node(grid.cell_nodes[c][k])]
             += share[k];
@@ -70,7 +62,7 @@ namespace fsgmpm
 
 
     template <int dim>
-    double
+    void
     field_contact(const BackgroundGrid<dim>   &grid,
                   const NodalConstraints<dim> &constraints,
                   const double                 friction,
@@ -80,10 +72,9 @@ namespace fsgmpm
                   NodalFields<dim>            &nodes)
     {
       if (grid.n_velocity_fields() == 1)
-        return 0;
+        return;
 
-      const unsigned int n_base  = grid.n_base_nodes();
-      double             removed = 0;
+      const unsigned int n_base = grid.n_base_nodes();
       for (const unsigned int i : nodes.active_nodes)
         {
           if (i >= n_base)
@@ -121,16 +112,12 @@ namespace fsgmpm
           v1 -= (m0 / m1) * change;
           constraints.apply_kinematic(i, v0);
           constraints.apply_kinematic(j, v1);
-          removed += 0.5
-                     * (m0 * (old0.norm_square() - v0.norm_square())
-                        + m1 * (old1.norm_square() - v1.norm_square()));
           if (update_acceleration)
             {
               nodes.acceleration[i] += (v0 - old0) / dt;
               nodes.acceleration[j] += (v1 - old1) / dt;
             }
         }
-      return removed;
     }
 
 
@@ -143,7 +130,7 @@ namespace fsgmpm
     contact_normals<3>(const BackgroundGrid<3> &,
                        const ParticleStore<3> &,
                        NodalFields<3> &);
-    template double
+    template void
     field_contact<2>(const BackgroundGrid<2> &,
                      const NodalConstraints<2> &,
                      const double,
@@ -151,7 +138,7 @@ namespace fsgmpm
                      const double,
                      const bool,
                      NodalFields<2> &);
-    template double
+    template void
     field_contact<3>(const BackgroundGrid<3> &,
                      const NodalConstraints<3> &,
                      const double,

@@ -38,15 +38,7 @@ namespace fsgmpm
       // Copies of a cell have different colours, so the check-and-set of
       // cell_counted and the sums on base nodes are race free.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        double share[dim + 1] = {};
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
-             ++p)
-          {
-            const auto lambda = grid.barycentric(c, particles.position[p]);
-            for (unsigned int k = 0; k < dim + 1; ++k)
-              share[k] += lambda[k] * particles.volume[p];
-          }
+        const auto         share = CellLoops::volume_shares(grid, particles, c);
         const unsigned int base_cell = grid.cell_in_field(c, 0);
         const bool         first = (smoothing.cell_counted[base_cell] != stamp);
         smoothing.cell_counted[base_cell] = stamp;

@@ -6,6 +6,7 @@
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/particles/particle_store.h>
 
+#include <array>
 #include <vector>
 
 namespace fsgmpm
@@ -48,6 +49,26 @@ namespace fsgmpm
               f(cells[i]);
           },
           16);
+    }
+
+    /// The points' volumes of cell @p c shared to its dim + 1 nodes,
+    /// share[k] = sum_p N_k(x_p) V_p (free-surface volume fraction, contact).
+    template <int dim>
+    std::array<double, dim + 1>
+    volume_shares(const BackgroundGrid<dim> &grid,
+                  const ParticleStore<dim>  &particles,
+                  const unsigned int         c)
+    {
+      std::array<double, dim + 1> share = {};
+      for (unsigned int p = particles.cell_start[c];
+           p < particles.cell_start[c + 1];
+           ++p)
+        {
+          const auto lambda = grid.barycentric(c, particles.position[p]);
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            share[k] += lambda[k] * particles.volume[p];
+        }
+      return share;
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).

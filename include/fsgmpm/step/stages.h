@@ -83,10 +83,9 @@ namespace fsgmpm
     /// velocity is reduced by Coulomb friction @p friction (stick if that
     /// stops it); separating fields are left alone. Momentum is conserved
     /// (the walls act again after). With @p update_acceleration the nodal
-    /// accelerations follow the velocity change (FLIP's Eq. 19). Returns
-    /// the nodal kinetic energy the contact removed (>= 0).
+    /// accelerations follow the velocity change (FLIP's Eq. 19).
     template <int dim>
-    double
+    void
     field_contact(const BackgroundGrid<dim>   &grid,
                   const NodalConstraints<dim> &constraints,
                   const double                 friction,
