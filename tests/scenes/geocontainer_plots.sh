@@ -2,7 +2,11 @@
 # The geocontainer doc figures' scripts run on real output (issue 12):
 # a 4 cm polygon drop for 0.05 s with output every 0.01 s, then
 # doc/scripts/plot_geocontainer.py and plot_geocontainer_snapshots.py must
-# each write a non-empty PNG. Uses Debian's python3-matplotlib.
+# each write a non-empty PNG; doc/scripts/water_compaction.py must find
+# the water filling its squares exactly at t = 0 (1.000: the body filler's
+# regular points) and within 1% at 0.05 s (measured 1.000, before the
+# compaction of doc/geocontainer_validation.md section 6 sets in). Uses
+# Debian's python3-matplotlib.
 set -euo pipefail
 exe=$1
 src=$2
@@ -16,6 +20,13 @@ trap 'rm -rf "$work"' EXIT
   "polygon 4 cm=$work/run/monitors.csv"
 /usr/bin/python3 "$src/doc/scripts/plot_geocontainer_snapshots.py" \
   "$work/s.png" "$work/run" 0.01,0.05
+/usr/bin/python3 "$src/doc/scripts/water_compaction.py" "$work/run" \
+  > "$work/compaction"
+cat "$work/compaction"
+awk 'NR == 2 && ($3 < 0.9995 || $3 > 1.0005) { bad = 1 }
+     NR > 2 && ($3 < 0.99 || $3 > 1.01) { bad = 1 }
+     END { exit bad || NR != 7 }' "$work/compaction" \
+  || { echo "water_compaction.py: unexpected values"; exit 1; }
 for f in v.png s.png; do
   [ -s "$work/$f" ] || { echo "missing $f"; exit 1; }
 done
