@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fsgmpm/materials/linear_elastic.h>
+#include <fsgmpm/materials/material_factory.h>
 
 #include <cmath>
 
@@ -84,4 +85,9 @@ namespace fsgmpm
   {
     return elasticity.strain_energy_density(s);
   }
+
+  FSGMPM_REGISTER_MATERIAL(LinearElastic,
+                           "linear elastic",
+                           "isotropic hypoelasticity with the Hill rate, Eq. "
+                           "(6) (subsection Linear elastic)")
 } // namespace fsgmpm

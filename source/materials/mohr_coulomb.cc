@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fsgmpm/materials/hill_rotation.h>
+#include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/materials/mohr_coulomb.h>
 
 #include <cmath>
@@ -235,4 +236,9 @@ namespace fsgmpm
   {
     return elasticity.strain_energy_density(s);
   }
+
+  FSGMPM_REGISTER_MATERIAL(MohrCoulomb,
+                           "Mohr-Coulomb",
+                           "linear elastic-perfectly plastic soil, Eqs. "
+                           "(5)-(8) (subsection Mohr-Coulomb)")
 } // namespace fsgmpm

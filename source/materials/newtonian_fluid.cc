@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/materials/newtonian_fluid.h>
 
 #include <cmath>
@@ -154,4 +155,9 @@ namespace fsgmpm
     const double p = -trace(s) / 3.;
     return 0.5 * p * p / K;
   }
+
+  FSGMPM_REGISTER_MATERIAL(NewtonianFluid,
+                           "Newtonian fluid",
+                           "weakly compressible Newtonian fluid, Eq. (13) "
+                           "(subsection Newtonian fluid)")
 } // namespace fsgmpm

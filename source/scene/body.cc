@@ -2,9 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/io/format.h>
-#include <fsgmpm/materials/linear_elastic.h>
-#include <fsgmpm/materials/mohr_coulomb.h>
-#include <fsgmpm/materials/newtonian_fluid.h>
+#include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 
@@ -82,11 +80,19 @@ namespace fsgmpm
                           Patterns::List(Patterns::Double()),
                           "Initial velocity (m/s, at most 1e5 in magnitude); "
                           "in 3D a two-entry value means z = 0.");
-        prm.declare_entry("Material model",
-                          "linear elastic",
-                          Patterns::Selection(
-                            "linear elastic|Mohr-Coulomb|Newtonian fluid"),
-                          "Constitutive model of the body.");
+        {
+          std::string pattern;
+          for (const std::string &name : MaterialFactory::names())
+            pattern += (pattern.empty() ? "" : "|") + name;
+          prm.declare_entry("Material model",
+                            "linear elastic",
+                            Patterns::Selection(pattern),
+                            "Constitutive model of the body, one of the "
+                            "registered material models (a program adds its "
+                            "own with FSGMPM_REGISTER_MATERIAL, "
+                            "materials/material_factory.h): "
+                              + MaterialFactory::documentation() + ".");
+        }
         prm.declare_entry("Volumetric smoothing",
                           "default",
                           Patterns::Selection("default|none|NMD|ANP|NMD+ANP"),
@@ -135,9 +141,7 @@ namespace fsgmpm
           "Contact (Bardenhagen et al. 2000): they cannot interpenetrate, "
           "slide with Contact/Friction coefficient, and separate freely. "
           "The membrane moves with field 0.");
-        LinearElastic::declare_parameters(prm);
-        MohrCoulomb::declare_parameters(prm);
-        NewtonianFluid::declare_parameters(prm);
+        MaterialFactory::declare_parameters(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -303,13 +307,10 @@ namespace fsgmpm
                                + "/Shape = membrane needs Velocity field = 0: "
                                  "the membrane and its fill move with field "
                                  "0."));
-        const std::string model = prm.get("Material model");
-        if (model == "linear elastic")
-          body.material = LinearElastic::create(prm, body.density, body.path);
-        else if (model == "Mohr-Coulomb")
-          body.material = MohrCoulomb::create(prm, body.density, body.path);
-        else
-          body.material = NewtonianFluid::create(prm, body.density, body.path);
+        body.material = MaterialFactory::create(prm.get("Material model"),
+                                                prm,
+                                                body.density,
+                                                body.path);
 
         const bool        fluid     = body.material->is_fluid();
         const std::string smoothing = prm.get("Volumetric smoothing");
