@@ -70,6 +70,8 @@ expect_error "membrane outside the mesh" "Membrane node .* lies outside the mesh
 expect_error "fill a missing membrane" "Shape = membrane needs a membrane" "$g" --set "Membrane/Enabled=false" --set "Monitors/Scene monitors="
 expect_error "self-intersecting membrane" "Membrane/Polygon vertices: The polygon intersects itself" "$g" --set "Membrane/Shape=polygon" --set "Membrane/Polygon vertices=1,1; 2,2; 2,1; 1,2"
 expect_error "zero membrane stiffness" "Axial stiffness" "$g" --set "Membrane/Axial stiffness=0"
+expect_error "membrane fill in velocity field 1" "Bodies/Body 0/Shape = membrane needs Velocity field = 0" "$2/../prm/geocontainer_polygon.prm" --set "Bodies/Body 0/Velocity field=1"
+expect_error "unknown material model" "Material model.*does not match" --set "Bodies/Body 0/Material model=Drucker-Prager"
 expect_error "ground level not a number" "Membrane/Ground level must be a number or none" "$g" --set "Membrane/Ground level=floor"
 
 echo "bad input: $passed passed, $failures failed"
