@@ -129,7 +129,8 @@ namespace fsgmpm
     if (std::isfinite(ground_level))
       for (unsigned int a = 0; a < n_nodes(); ++a)
         if (position[a][1] < ground_level)
-          force[a][1] += ground_stiffness * (ground_level - position[a][1]);
+          force[a][1]
+            += node_ground_stiffness(a) * (ground_level - position[a][1]);
   }
 
 
@@ -354,8 +355,24 @@ namespace fsgmpm
 
 
   template <int dim>
+  double
+  Membrane<dim>::node_ground_stiffness(const unsigned int a) const
+  {
+    // 2D: per metre of depth. 3D: the same per metre of the node's width,
+    // the square root of its share of the rest area (mass / areal mass), so
+    // that the penetration, about the bottom pressure times the element
+    // size over k, and the ground's time-step bound sqrt(m/k) are those of
+    // 2D at the same element size.
+    return dim == 2
+             ? ground_stiffness
+             : ground_stiffness * std::sqrt(mass[a] / properties.areal_mass);
+  }
+
+
+
+  template <int dim>
   std::vector<SymmetricTensor<2, dim>>
-  Membrane<dim>::nodal_stiffness() const
+  Membrane<dim>::nodal_stiffness(const double ground_reach) const
   {
     std::vector<SymmetricTensor<2, dim>> k(n_nodes());
     const double                         EA = properties.axial_stiffness;
@@ -375,39 +392,83 @@ namespace fsgmpm
     if (slip)
       loop_stiffness = loop_axial_stiffness();
     for (unsigned int e = 0; e < elements.size(); ++e)
-      for (unsigned int i = 0; i < dim; ++i)
+      if (dim == 3 && !slip)
         {
-          const auto                   &el = elements[e];
-          const unsigned int            j  = (i + 1) % dim;
-          const Tensor<1, dim>          d  = position[el[j]] - position[el[i]];
-          const double                  l  = d.norm();
-          const SymmetricTensor<2, dim> tt
-            = symmetrize(outer_product(d / l, d / l));
-          // An edge shared by two triangles counts twice: a safe bound.
-          // Slip in 3D keeps the axial stiffness along z, which the rings
-          // do not spread (the roller faces hold z anyway).
-          SymmetricTensor<2, dim> axial = tt;
-          if (slip)
+          // A constant-strain triangle's stiffness block between nodes i
+          // and j is A g_i . C . g_j in the triangle's plane (g = grad N,
+          // |g_i| = l_i / 2A with l_i the edge opposite i), plus the
+          // geometric part sigma A (g_i . g_j) I: the row sums bound the
+          // node's share by 3/4 (1 + nu) EA A |g_i| sum_j |g_j| in the plane
+          // (|B_i|^2 <= 3/2 |g_i|^2, |C| = EA/(1 - nu); with c0 of the
+          // coupling this keeps a margin) and the tension's part in every
+          // direction. (Edges' EA/l, the 2D cable's per-metre stiffness,
+          // would treat each edge as a 1 m wide strip: ~60x too stiff at
+          // 1 cm elements, doc/geocontainer_validation.md, section 8.)
+          const auto          &el = elements[e];
+          const Tensor<1, dim> n
+            = cross_product_3d(position[el[1]] - position[el[0]],
+                               position[el[2]] - position[el[0]]);
+          const double two_area = n.norm();
+          if (!(two_area > 0))
+            continue;
+          std::array<double, 3> g;
+          double                g_sum = 0;
+          for (unsigned int i = 0; i < 3; ++i)
             {
-              axial = SymmetricTensor<2, dim>();
-              if (dim == 3)
-                axial[dim - 1][dim - 1] = tt[dim - 1][dim - 1];
+              g[i]
+                = position[el[(i + 1) % 3]].distance(position[el[(i + 2) % 3]])
+                  / two_area;
+              g_sum += g[i];
             }
-          const SymmetricTensor<2, dim> k_edge
-            = (EA / l) * axial
-              + (std::max(tension[e], 0.) / l)
-                  * (unit_symmetric_tensor<dim>() - tt);
-          k[el[i]] += k_edge;
-          k[el[j]] += k_edge;
-          if (dim == 2)
-            break;
+          const SymmetricTensor<2, dim> in_plane
+            = unit_symmetric_tensor<dim>()
+              - symmetrize(outer_product(n / two_area, n / two_area));
+          const double area = two_area / 2;
+          for (unsigned int i = 0; i < 3; ++i)
+            k[el[i]]
+              += (area * g[i] * g_sum)
+                 * (0.75 * (1 + properties.poisson_ratio) * EA * in_plane
+                    + std::max(tension[e], 0.) * unit_symmetric_tensor<dim>());
         }
+      else
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const auto                   &el = elements[e];
+            const unsigned int            j  = (i + 1) % dim;
+            const Tensor<1, dim>          d = position[el[j]] - position[el[i]];
+            const double                  l = d.norm();
+            const SymmetricTensor<2, dim> tt
+              = symmetrize(outer_product(d / l, d / l));
+            // An edge shared by two triangles counts twice: a safe bound.
+            // Slip in 3D keeps the axial stiffness along z, which the rings
+            // do not spread (the roller faces hold z anyway).
+            SymmetricTensor<2, dim> axial = tt;
+            if (slip)
+              {
+                axial = SymmetricTensor<2, dim>();
+                if (dim == 3)
+                  axial[dim - 1][dim - 1] = tt[dim - 1][dim - 1];
+              }
+            const SymmetricTensor<2, dim> k_edge
+              = (EA / l) * axial
+                + (std::max(tension[e], 0.) / l)
+                    * (unit_symmetric_tensor<dim>() - tt);
+            k[el[i]] += k_edge;
+            k[el[j]] += k_edge;
+            if (dim == 2)
+              break;
+          }
     if (slip)
       for (unsigned int a = 0; a < n_nodes(); ++a)
         k[a] += loop_stiffness[a] * unit_symmetric_tensor<dim>();
+    // The ground's penalty only stiffens the nodes within ground_reach of
+    // it (Stages::membrane_time_step: the longest element, far more than a
+    // node moves in a step, so that a falling membrane keeps its own, much
+    // larger, time step until it comes near the ground).
     if (std::isfinite(ground_level))
-      for (auto &ka : k)
-        ka[1][1] += ground_stiffness;
+      for (unsigned int a = 0; a < n_nodes(); ++a)
+        if (position[a][1] < ground_level + ground_reach)
+          k[a][1][1] += node_ground_stiffness(a);
     return k;
   }
 

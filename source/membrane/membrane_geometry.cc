@@ -191,10 +191,13 @@ namespace fsgmpm
       prm.declare_entry("Ground stiffness",
                         "1e7",
                         Patterns::Double(0, 1e15),
-                        "Penalty stiffness per membrane node (N/m per metre "
-                        "in 2D, at most 1e15): a node below the ground gets k "
-                        "times its depth upwards. The penetration is about "
-                        "the bottom pressure times the element size / k.");
+                        "Penalty stiffness of the ground per metre of a "
+                        "membrane node's width (N/m^2, at most 1e15; the "
+                        "width is 1 m of depth in 2D and the square root of "
+                        "the node's share of the membrane's area in 3D): a "
+                        "node below the ground gets k times its width times "
+                        "its depth upwards. The penetration is about the "
+                        "bottom pressure times the element size / k.");
       prm.declare_entry("Axial stiffness",
                         "5e7",
                         Patterns::Double(0, 1e12),

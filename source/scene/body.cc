@@ -99,6 +99,15 @@ namespace fsgmpm
                           "Volumetric-locking remedies (paper Section 3): NMD "
                           "(Eqs. 22-25), ANP (Eqs. 28-29), both, or none; "
                           "default: NMD+ANP for fluids, none for solids.");
+        prm.declare_entry(
+          "Smoothing weights",
+          "point volume",
+          Patterns::Selection("point volume|capped cell volume"),
+          "Weights of the NMD and ANP nodal averages: each point's volume "
+          "(paper, Eqs. 24 and 29), or each cell's points together weighing "
+          "at most the cell's volume, min(sum_p V_p, V_c), which keeps a "
+          "fluid's points from packing in violent flow "
+          "(doc/geocontainer_validation.md, Section 6).");
         prm.declare_entry("ANP mapping",
                           "element_mean",
                           Patterns::Selection("element_mean|interpolate"),
@@ -321,6 +330,8 @@ namespace fsgmpm
                              : (smoothing.find("ANP") != std::string::npos);
         body.options.anp_interpolate
           = (prm.get("ANP mapping") == "interpolate");
+        body.options.capped_weights
+          = (prm.get("Smoothing weights") == "capped cell volume");
         const std::string detect = prm.get("Free surface detection");
         body.options.detect_free_surface
           = (detect == "default") ? fluid : (detect == "true");

@@ -24,9 +24,17 @@ namespace fsgmpm
         return;
 
       // Eq. (29): p_i = sum_e sum_p p_p w_p / sum_e sum_p w_p over the cells
-      // attached to node i, w_p the point volumes, per material, without
-      // the free-surface points.
+      // attached to node i, w_p the point volumes (optionally capped per
+      // cell), per material, without the free-surface points.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
+        thread_local std::vector<double> scale;
+        CellLoops::weight_scales(
+          grid,
+          particles,
+          options,
+          c,
+          [&](const unsigned int p) { return !particles.free_surface[p]; },
+          scale);
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
@@ -34,12 +42,12 @@ namespace fsgmpm
             const unsigned int m = particles.material_id[p];
             if (!options[m].anp || particles.free_surface[p])
               continue;
-            const double pV
-              = -trace(particles.stress[p]) / 3. * particles.volume[p];
+            const double w  = scale[m] * particles.volume[p];
+            const double pV = -trace(particles.stress[p]) / 3. * w;
             for (const unsigned int i : grid.cell_nodes[c])
               {
                 smoothing.numerator[m][i] += pV;
-                smoothing.denominator[m][i] += particles.volume[p];
+                smoothing.denominator[m][i] += w;
               }
           }
       });

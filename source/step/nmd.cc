@@ -34,7 +34,7 @@ namespace fsgmpm
     {
       // NMD, Eq. (24): nodal volumetric strain rate, averaged over the
       // attached non-empty cells with the volumes of the material's points
-      // as weights (per material).
+      // as weights (per material), optionally capped per cell.
       bool any_nmd = false;
       for (unsigned int m = 0; m < options.size(); ++m)
         if (options[m].nmd)
@@ -46,6 +46,14 @@ namespace fsgmpm
         CellLoops::scatter_by_colour(
           grid, particles, [&](const unsigned int c) {
             const double rate = trace(smoothing.velocity_gradient[c]);
+            thread_local std::vector<double> scale;
+            CellLoops::weight_scales(
+              grid,
+              particles,
+              options,
+              c,
+              [](unsigned int) { return true; },
+              scale);
             for (unsigned int p = particles.cell_start[c];
                  p < particles.cell_start[c + 1];
                  ++p)
@@ -53,10 +61,11 @@ namespace fsgmpm
                 const unsigned int m = particles.material_id[p];
                 if (!options[m].nmd)
                   continue;
+                const double w = scale[m] * particles.volume[p];
                 for (const unsigned int i : grid.cell_nodes[c])
                   {
-                    smoothing.numerator[m][i] += particles.volume[p] * rate;
-                    smoothing.denominator[m][i] += particles.volume[p];
+                    smoothing.numerator[m][i] += w * rate;
+                    smoothing.denominator[m][i] += w;
                   }
               }
           });

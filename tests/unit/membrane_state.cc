@@ -19,7 +19,9 @@
 //     T/l sin^2) along the tangent and 2 (EA/l sin^2 + T/l cos^2) along the
 //     normal, to 1e-12; the ground penalty adds its stiffness along y;
 //     with slip the cables' axial part is replaced by the loop's bound;
-// (5) 3D slip on the rings of an extruded membrane (see below).
+// (5) 3D slip on the rings of an extruded membrane (see below);
+// (6) 3D no-slip: the triangles' nodal stiffness bounds the explicit time
+//     step safely and not far below the exact limit (see below).
 
 #include <deal.II/grid/tria.h>
 
@@ -28,6 +30,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 using namespace fsgmpm;
 
@@ -368,4 +371,139 @@ TEST(MembraneState, SlipOnExtrudedMembraneRings)
   Triangulation<2, 3> tet_mesh;
   tet_mesh.create_triangulation(tet, faces, SubCellData());
   EXPECT_TRUE(Membrane<3>(tet_mesh, props).rings.empty());
+}
+
+
+
+// The time-step bound of a 3D membrane, 2 sqrt(m_a / (c0 k_a)) per node
+// (Stages::membrane_time_step, c0 = 2.5 / (1 - nu^2), k_a the largest
+// eigenvalue of Membrane::nodal_stiffness), against the exact explicit limit
+// 2 / sqrt(lambda_max(M^-1 K)) of a tilted sheet of 5 x 4 nodes (1.1 x 1 cm
+// spacing, like the geocontainer's 3D membrane), stretched 1% in both
+// directions, with K from central differences of the nodal forces and the
+// lumped masses. Measured: bound / exact = 0.56 (nu = 0) and 0.49
+// (nu = 0.3): safe (asserted <= 1) and not far below it (asserted >= 0.4).
+// (The edges' EA/l of the 2D cable, used in 3D before, and the ground's
+// penalty on every node gave the 3D geocontainer a step of 2.2e-7 s at
+// 2 cm; with this bound it is 2.7e-6 s: doc/geocontainer_validation.md,
+// section 8.) The ground's
+// penalty counts only within ground_reach of the ground, and in 3D is the
+// stiffness per metre times the node's width sqrt(mass / areal mass).
+TEST(MembraneState, TriangleStiffnessBoundsTheTimeStep)
+{
+  for (const double nu : {0., 0.3})
+    {
+      const unsigned int    nx = 5, ny = 4;
+      const double          hx = 0.011, hy = 0.01;
+      const Tensor<1, 3>    e1({0.8, 0.6, 0.}), e2({0., 0., 1.});
+      std::vector<Point<3>> vertices;
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          vertices.emplace_back(Point<3>() + (i * hx) * e1 + (j * hy) * e2);
+      std::vector<CellData<2>> cells;
+      for (unsigned int j = 0; j + 1 < ny; ++j)
+        for (unsigned int i = 0; i + 1 < nx; ++i)
+          {
+            const unsigned int a = j * nx + i, b = a + 1, c = a + nx, d = c + 1;
+            CellData<2>        t1(3), t2(3);
+            t1.vertices = {a, b, d};
+            t2.vertices = {a, d, c};
+            cells.push_back(t1);
+            cells.push_back(t2);
+          }
+      Triangulation<2, 3> mesh;
+      mesh.create_triangulation(vertices, cells, SubCellData());
+      MembraneProperties props;
+      props.axial_stiffness = 5e4;
+      props.poisson_ratio   = nu;
+      props.areal_mass      = 0.3;
+      Membrane<3> m(mesh, props);
+      for (auto &x : m.position)
+        x = Point<3>() + 1.01 * (x - Point<3>());
+
+      // K = -df/dx by central differences (the forces are exact to
+      // round-off, the strain is quadratic in x).
+      const unsigned int          N = 3 * m.n_nodes();
+      std::vector<double>         K(N * N);
+      const double                eps  = 1e-7;
+      const std::vector<Point<3>> base = m.position;
+      for (unsigned int col = 0; col < N; ++col)
+        {
+          std::vector<Tensor<1, 3>> f[2];
+          for (const int side : {0, 1})
+            {
+              m.position = base;
+              m.position[col / 3][col % 3] += (side ? eps : -eps);
+              m.compute_forces();
+              f[side] = m.force;
+            }
+          for (unsigned int row = 0; row < N; ++row)
+            K[row * N + col]
+              = -(f[1][row / 3][row % 3] - f[0][row / 3][row % 3]) / (2 * eps);
+        }
+      m.position = base;
+      m.compute_forces();
+
+      // lambda_max of M^-1/2 K M^-1/2 by power iteration.
+      std::vector<double> v(N), w(N);
+      for (unsigned int k = 0; k < N; ++k)
+        v[k] = 1. + 0.1 * std::sin(7. * k);
+      double lambda = 0;
+      for (unsigned int it = 0; it < 2000; ++it)
+        {
+          double norm = 0;
+          for (unsigned int r = 0; r < N; ++r)
+            {
+              w[r] = 0;
+              for (unsigned int c = 0; c < N; ++c)
+                w[r] += K[r * N + c] * v[c] / std::sqrt(m.mass[c / 3]);
+              w[r] /= std::sqrt(m.mass[r / 3]);
+              norm += w[r] * w[r];
+            }
+          norm      = std::sqrt(norm);
+          double vw = 0, vv = 0;
+          for (unsigned int k = 0; k < N; ++k)
+            {
+              vw += v[k] * w[k];
+              vv += v[k] * v[k];
+            }
+          lambda = vw / vv;
+          for (unsigned int k = 0; k < N; ++k)
+            v[k] = w[k] / norm;
+        }
+      const double dt_exact = 2. / std::sqrt(lambda);
+
+      const double c0       = 2.5 / (1 - nu * nu);
+      const auto   k_nodes  = m.nodal_stiffness();
+      double       dt_bound = std::numeric_limits<double>::max();
+      for (unsigned int a = 0; a < m.n_nodes(); ++a)
+        {
+          double k_max = 0;
+          for (const auto &[k, e] : eigenvectors(k_nodes[a]))
+            k_max = std::max(k_max, k);
+          dt_bound
+            = std::min(dt_bound, 2. * std::sqrt(m.mass[a] / (c0 * k_max)));
+        }
+      std::printf("measured 3D sheet, nu = %.1f: exact explicit limit %.3e s, "
+                  "bound %.3e s (ratio %.3f)\n",
+                  nu,
+                  dt_exact,
+                  dt_bound,
+                  dt_bound / dt_exact);
+      EXPECT_LE(dt_bound, dt_exact);
+      EXPECT_GE(dt_bound, 0.4 * dt_exact);
+
+      // The ground: only within the reach, k times the node's width in 3D.
+      m.ground_level     = base[0][1] + 0.5 * hy;
+      m.ground_stiffness = 1e7;
+      const auto kg      = m.nodal_stiffness(0.02);
+      for (unsigned int a = 0; a < m.n_nodes(); ++a)
+        {
+          const double expected
+            = (m.position[a][1] < m.ground_level + 0.02)
+                ? 1e7 * std::sqrt(m.mass[a] / props.areal_mass)
+                : 0.;
+          EXPECT_NEAR((kg[a] - k_nodes[a])[1][1], expected, 1e-6 * 1e7);
+        }
+    }
 }

@@ -101,14 +101,18 @@ namespace fsgmpm
     double
     element_size(const unsigned int e) const;
 
-    /// Per node, the sum over its element edges of the axial stiffness
-    /// EA/l t(x)t along the edge and the geometric stiffness T/l (I - t(x)t)
-    /// across it (a taut cable resists sideways motion with its tension),
-    /// plus the ground penalty along y: the directional stiffness that the
+    /// Per node, the sum over its element edges (2D, and 3D with slip) of
+    /// the axial stiffness EA/l t(x)t along the edge and the geometric
+    /// stiffness T/l (I - t(x)t) across it (a taut cable resists sideways
+    /// motion with its tension), plus the ground penalty along y on the nodes
+    /// less than
+    /// @p ground_reach above the ground: the directional stiffness that the
     /// nodal time-step bound and the mass scaling need. With slip, the
-    /// axial part is loop_axial_stiffness() in every direction.
+    /// axial part is loop_axial_stiffness() in every direction. In 3D the
+    /// elastic part is the constant-strain triangles' row sums.
     std::vector<SymmetricTensor<2, dim>>
-    nodal_stiffness() const;
+    nodal_stiffness(const double ground_reach
+                    = std::numeric_limits<double>::infinity()) const;
 
     /// Total current length (2D) or area (3D).
     double
@@ -172,11 +176,16 @@ namespace fsgmpm
     std::vector<std::array<double, dim + 1>> weights;
 
     /// Rigid frictionless ground y = ground_level acting on the membrane
-    /// nodes themselves (penalty k = ground_stiffness per node, N/m per m
-    /// in 2D), so that the membrane can rest on it exactly instead of one
-    /// cell early as with a wall of the grid. Off if not finite.
+    /// nodes themselves (penalty node_ground_stiffness()), so that the membrane
+    /// can rest on it exactly instead of one cell early as with a wall of the
+    /// grid. Off if not finite.
     double ground_level     = -std::numeric_limits<double>::infinity();
     double ground_stiffness = 0;
+
+    /// The ground penalty of node a (N/m): ground_stiffness in 2D (per
+    /// metre of depth), ground_stiffness times the node's width in 3D.
+    double
+    node_ground_stiffness(const unsigned int a) const;
 
     // --- nodes -----------------------------------------------------------
     std::vector<Point<dim>>     position;

@@ -6,6 +6,7 @@
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/particles/particle_store.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -69,6 +70,40 @@ namespace fsgmpm
             share[k] += lambda[k] * particles.volume[p];
         }
       return share;
+    }
+
+    /**
+     * Scale of each point's weight in the NMD and ANP averages of cell @p c,
+     * per material: 1 for point-volume weights, min(1, V_c / sum_p V_p) for
+     * capped weights (MaterialOptions::capped_weights), the sum over the
+     * material's points for which @p counts(p) is true.
+     */
+    template <int dim, typename Options, typename Predicate>
+    void
+    weight_scales(const BackgroundGrid<dim> &grid,
+                  const ParticleStore<dim>  &particles,
+                  const Options             &options,
+                  const unsigned int         c,
+                  const Predicate           &counts,
+                  std::vector<double>       &scale)
+    {
+      scale.assign(options.size(), 0.);
+      bool any_capped = false;
+      for (unsigned int p = particles.cell_start[c];
+           p < particles.cell_start[c + 1];
+           ++p)
+        {
+          const unsigned int m = particles.material_id[p];
+          if (options[m].capped_weights && counts(p))
+            {
+              scale[m] += particles.volume[p];
+              any_capped = true;
+            }
+        }
+      for (unsigned int m = 0; m < options.size(); ++m)
+        scale[m] = (any_capped && options[m].capped_weights && scale[m] > 0)
+                     ? std::min(1., grid.cell_volume[c] / scale[m])
+                     : 1.;
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).

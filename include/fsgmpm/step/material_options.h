@@ -12,6 +12,14 @@ namespace fsgmpm
   {
     bool nmd = false; ///< nodal mixed discretisation, Eqs. (22)-(25)
     bool anp = false; ///< average nodal pressure, Eqs. (28)-(29)
+    /**
+     * Weights of the NMD and ANP nodal averages. false: each point's volume
+     * (paper, Eqs. 24 and 29). true: each cell's points together weigh
+     * min(sum_p V_p, V_c), so a cell whose points have packed beyond its
+     * volume does not outweigh its neighbours (doc/geocontainer_validation.md
+     * Section 6: removes most of the water's point compaction).
+     */
+    bool capped_weights = false;
     /// ANP back-mapping: false = element mean (paper), true = interpolate.
     bool   anp_interpolate        = false;
     bool   detect_free_surface    = false; ///< volume-fraction form, Eq. (33)
