@@ -1,8 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/base/plugin_registry.h>
 #include <fsgmpm/materials/material_factory.h>
-
-#include <map>
 
 namespace fsgmpm
 {
@@ -10,19 +9,16 @@ namespace fsgmpm
   {
     namespace
     {
-      struct Entry
+      struct Functions
       {
-        std::string description;
-        Declare     declare;
-        Create      create;
+        Declare declare;
+        Create  create;
       };
 
-      // A function-local static: registrations from other translation
-      // units may run before this file's own static initialisation.
-      std::map<std::string, Entry> &
+      PluginRegistry<Functions> &
       registry()
       {
-        static std::map<std::string, Entry> models;
+        static PluginRegistry<Functions> models("material model");
         return models;
       }
     } // namespace
@@ -35,20 +31,11 @@ namespace fsgmpm
                       const Declare     &declare,
                       const Create      &create)
     {
-      AssertThrow(!name.empty()
-                    && name.find_first_of("|,") == std::string::npos,
-                  ExcMessage("A material model's name must be non-empty and "
-                             "hold neither '|' nor ','; got '"
-                             + name + "'."));
-      AssertThrow(registry().count(name) == 0,
-                  ExcMessage("A material model named '" + name
-                             + "' is already registered; choose another "
-                               "name."));
       AssertThrow(declare && create,
                   ExcMessage("Material model '" + name
                              + "': both the declare and the create function "
                                "are needed."));
-      registry()[name] = Entry{description, declare, create};
+      registry().add(name, description, Functions{declare, create});
       return true;
     }
 
@@ -57,10 +44,7 @@ namespace fsgmpm
     std::vector<std::string>
     names()
     {
-      std::vector<std::string> result;
-      for (const auto &entry : registry())
-        result.push_back(entry.first);
-      return result;
+      return registry().names();
     }
 
 
@@ -68,11 +52,7 @@ namespace fsgmpm
     std::string
     documentation()
     {
-      std::string text;
-      for (const auto &entry : registry())
-        text += (text.empty() ? "" : "; ") + entry.first + ": "
-                + entry.second.description;
-      return text;
+      return registry().documentation();
     }
 
 
@@ -80,8 +60,7 @@ namespace fsgmpm
     void
     declare_parameters(ParameterHandler &prm)
     {
-      for (const auto &entry : registry())
-        entry.second.declare(prm);
+      registry().for_each([&](const Functions &f) { f.declare(prm); });
     }
 
 
@@ -92,19 +71,9 @@ namespace fsgmpm
            const double       density,
            const std::string &path)
     {
-      const auto entry = registry().find(name);
-      if (entry == registry().end())
-        {
-          std::string known;
-          for (const std::string &n : names())
-            known += (known.empty() ? "" : ", ") + n;
-          AssertThrow(false,
-                      ExcMessage(path + "/Material model = " + name
-                                 + " is not a registered material model; "
-                                   "registered: "
-                                 + known + "."));
-        }
-      auto material = entry->second.create(prm, density, path);
+      auto material = registry()
+                        .get(name, path + "/Material model")
+                        .create(prm, density, path);
       AssertThrow(material != nullptr,
                   ExcMessage("Material model '" + name
                              + "' created nothing for " + path + "."));

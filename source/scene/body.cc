@@ -5,8 +5,8 @@
 #include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
+#include <fsgmpm/scene/shape_factory.h>
 
-#include <sstream>
 
 namespace fsgmpm
 {
@@ -25,47 +25,15 @@ namespace fsgmpm
         prm.enter_subsection("Body " + std::to_string(b));
         prm.declare_entry("Shape",
                           "box",
-                          Patterns::Selection(
-                            "box|column|ellipse|polygon|membrane"),
-                          "Region the body fills initially: box, column (a "
-                          "box given by its base corner, width and aspect "
-                          "ratio), ellipse (ellipsoid in 3D), polygon (2D "
-                          "only) or membrane (the inside of the closed "
-                          "membrane of subsection Membrane).");
-        prm.declare_entry("Column base corner",
-                          "0, 0",
-                          Patterns::List(Patterns::Double()),
-                          "Shape = column: lower corner (m); in 3D the depth "
-                          "is that of Box lower/upper corner.");
-        prm.declare_entry("Column width",
-                          "0.2",
-                          Patterns::Double(0),
-                          "Shape = column: width L0 in x (m, > 0).");
-        prm.declare_entry("Column aspect ratio",
-                          "1",
-                          Patterns::Double(0),
-                          "Shape = column: a = H0/L0 (> 0).");
-        prm.declare_entry("Box lower corner",
-                          "0.3, 0.2",
-                          Patterns::List(Patterns::Double()),
-                          "Shape = box: lower corner (dim coordinates, m).");
-        prm.declare_entry("Box upper corner",
-                          "0.7, 0.4",
-                          Patterns::List(Patterns::Double()),
-                          "Shape = box: upper corner (dim coordinates, m).");
-        prm.declare_entry("Ellipse center",
-                          "0.5, 0.5",
-                          Patterns::List(Patterns::Double()),
-                          "Shape = ellipse: centre (m).");
-        prm.declare_entry("Ellipse semi-axes",
-                          "0.1, 0.1",
-                          Patterns::List(Patterns::Double(0)),
-                          "Shape = ellipse: semi-axes along x, y (, z) (m).");
-        prm.declare_entry("Polygon vertices",
-                          "",
-                          Patterns::Anything(),
-                          "Shape = polygon: closed simple polygon as "
-                          "'x0, y0; x1, y1; ...' (m), 2D only.");
+                          Patterns::Selection(ShapeFactory::pattern()
+                                              + "|membrane"),
+                          "Region the body fills initially, one of the "
+                          "registered body shapes (a program adds its own "
+                          "with FSGMPM_REGISTER_SHAPE, scene/shape_factory.h): "
+                            + ShapeFactory::documentation()
+                            + "; or membrane: the inside of the closed "
+                              "membrane of subsection Membrane.");
+        ShapeFactory::declare_parameters(prm);
         prm.declare_entry("Particles per cell",
                           "4",
                           Patterns::Integer(1, 4096),
@@ -166,13 +134,6 @@ namespace fsgmpm
     // Patterns.)
     constexpr double max_speed = 1e5; // m/s
 
-    template <int dim>
-    Point<dim>
-    parse_point(const std::string &text, const std::string &path)
-    {
-      return Point<dim>(parse_vector<dim>(text, path));
-    }
-
   } // namespace
 
 
@@ -190,94 +151,10 @@ namespace fsgmpm
         body.path = "Bodies/Body " + std::to_string(b);
         prm.enter_subsection("Body " + std::to_string(b));
         const std::string shape = prm.get("Shape");
-        // A box from its corners; its errors name the parameters.
-        const auto make_box = [&](const Point<dim>  &lower,
-                                  const Point<dim>  &upper,
-                                  const std::string &parameters) {
-          try
-            {
-              body.shape = std::make_unique<BoxShape<dim>>(lower, upper);
-            }
-          catch (ExceptionBase &e)
-            {
-              std::ostringstream info;
-              e.print_info(info);
-              AssertThrow(false,
-                          ExcMessage(parameters + ": "
-                                     + Utilities::trim(info.str()) + " Got ["
-                                     + format(lower) + "] - [" + format(upper)
-                                     + "]."));
-            }
-          body.shape->parameters = parameters;
-        };
-        if (shape == "box")
-          make_box(parse_point<dim>(prm.get("Box lower corner"),
-                                    body.path + "/Box lower corner"),
-                   parse_point<dim>(prm.get("Box upper corner"),
-                                    body.path + "/Box upper corner"),
-                   body.path + "/Box lower corner and Box upper corner");
-        else if (shape == "column")
-          {
-            const Point<dim> base
-              = parse_point<dim>(prm.get("Column base corner"),
-                                 body.path + "/Column base corner");
-            const double width = prm.get_double("Column width");
-            const double a     = prm.get_double("Column aspect ratio");
-            AssertThrow(width > 0 && a > 0,
-                        ExcMessage(body.path
-                                   + ": Column width and Column aspect ratio "
-                                     "must be positive."));
-            Point<dim> upper = base;
-            upper[0] += width;
-            upper[1] += a * width;
-            if (dim == 3)
-              upper[2] = parse_point<dim>(prm.get("Box upper corner"),
-                                          body.path + "/Box upper corner")[2];
-            make_box(base,
-                     upper,
-                     body.path
-                       + "/Column base corner, Column width and Column "
-                         "aspect ratio");
-          }
-        else if (shape == "ellipse")
-          {
-            body.shape = std::make_unique<EllipseShape<dim>>(
-              parse_point<dim>(prm.get("Ellipse center"),
-                               body.path + "/Ellipse center"),
-              parse_vector<dim>(prm.get("Ellipse semi-axes"),
-                                body.path + "/Ellipse semi-axes"));
-            body.shape->parameters
-              = body.path + "/Ellipse center and Ellipse semi-axes";
-          }
-        else if (shape == "membrane")
+        if (shape == "membrane")
           body.fills_membrane = true; // the shape is set with the membrane
         else
-          {
-            if constexpr (dim == 2)
-              {
-                const auto vertices
-                  = parse_polygon(prm.get("Polygon vertices"),
-                                  body.path + "/Polygon vertices");
-                try
-                  {
-                    body.shape = std::make_unique<PolygonShape>(vertices);
-                    body.shape->parameters = body.path + "/Polygon vertices";
-                  }
-                catch (ExceptionBase &e)
-                  {
-                    std::ostringstream info;
-                    e.print_info(info);
-                    AssertThrow(false,
-                                ExcMessage(body.path + "/Polygon vertices: "
-                                           + Utilities::trim(info.str())));
-                  }
-              }
-            else
-              AssertThrow(false,
-                          ExcMessage(body.path
-                                     + "/Shape = polygon is only available "
-                                       "in 2D."));
-          }
+          body.shape = ShapeFactory::create<dim>(shape, prm, body.path);
         body.particles_per_cell = prm.get_integer("Particles per cell");
         {
           unsigned int n = body.particles_per_cell;

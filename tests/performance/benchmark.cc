@@ -351,6 +351,17 @@ main(int argc, char **argv)
                       "  set Velocity transfer = APIC\n"
                       "end\n",
                   dam_break_baseline);
+      // The same with NMD and ANP weights capped per cell (the extra pass
+      // over each cell's points in both averages).
+      run_case<2>("dam_break_2d_capped",
+                  steps,
+                  dam_break_scene()
+                    + "subsection Bodies\n"
+                      "  subsection Body 0\n"
+                      "    set Smoothing weights = capped cell volume\n"
+                      "  end\n"
+                      "end\n",
+                  dam_break_baseline);
       run_case<3>("elastic_block_3d", std::max(2u, steps / 2));
       run_case<3>("dam_break_3d",
                   std::max(2u, steps / 2),
