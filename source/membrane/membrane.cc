@@ -372,7 +372,7 @@ namespace fsgmpm
 
   template <int dim>
   std::vector<SymmetricTensor<2, dim>>
-  Membrane<dim>::nodal_stiffness(const double ground_reach) const
+  Membrane<dim>::nodal_stiffness() const
   {
     std::vector<SymmetricTensor<2, dim>> k(n_nodes());
     const double                         EA = properties.axial_stiffness;
@@ -461,14 +461,13 @@ namespace fsgmpm
     if (slip)
       for (unsigned int a = 0; a < n_nodes(); ++a)
         k[a] += loop_stiffness[a] * unit_symmetric_tensor<dim>();
-    // The ground's penalty only stiffens the nodes within ground_reach of
-    // it (Stages::membrane_time_step: the longest element, far more than a
-    // node moves in a step, so that a falling membrane keeps its own, much
-    // larger, time step until it comes near the ground).
+    // The ground's penalty on every node, also far above the ground: a
+    // bound that let the time step grow while the membrane is away from it
+    // made the 2D ellipse scene's energy grow (doc/geocontainer_validation.md,
+    // section 8).
     if (std::isfinite(ground_level))
       for (unsigned int a = 0; a < n_nodes(); ++a)
-        if (position[a][1] < ground_level + ground_reach)
-          k[a][1][1] += node_ground_stiffness(a);
+        k[a][1][1] += node_ground_stiffness(a);
     return k;
   }
 

@@ -71,15 +71,8 @@ namespace fsgmpm
         = (dim == 2)
             ? 2.5
             : 2.5 / (1. - std::pow(membrane.properties.poisson_ratio, 2));
-      // Without mass scaling, the ground's penalty counts only on the nodes
-      // that can reach it within the step (less than the longest element
-      // above it: a node moves far less per step); with mass scaling (a
-      // resting membrane) on every node, so that a node's fictitious inertia
-      // does not jump when it comes near the ground.
       const std::vector<SymmetricTensor<2, dim>> k_node
-        = membrane.nodal_stiffness(dt_floor > 0
-                                     ? std::numeric_limits<double>::infinity()
-                                     : membrane.max_element_length());
+        = membrane.nodal_stiffness();
       std::vector<unsigned int> touched;
       touched.reserve(membrane.n_nodes() * (dim + 1));
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)

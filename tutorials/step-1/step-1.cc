@@ -15,8 +15,8 @@
  *   wall of a tank and is released at t = 0;
  * - the water is a Newtonian fluid, weakly compressible (bulk modulus
  *   2.5 MPa, a sound speed of 50 m/s, twenty times the flow's speed: the
- *   answer of real water, 2.13 GPa, to 0.001, at a twentieth of the
- *   steps), with the paper's volumetric smoothing (NMD and ANP) and
+ *   answer of real water, 2.13 GPa, to 0.001 in the front, with 28 times
+ *   fewer steps), with the paper's volumetric smoothing (NMD and ANP) and
  *   free-surface detection;
  * - the program follows the surge front, the largest x of the points in
  *   the bottom cell row, and compares it, in Martin and Moyce's

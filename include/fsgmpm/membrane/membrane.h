@@ -104,15 +104,13 @@ namespace fsgmpm
     /// Per node, the sum over its element edges (2D, and 3D with slip) of
     /// the axial stiffness EA/l t(x)t along the edge and the geometric
     /// stiffness T/l (I - t(x)t) across it (a taut cable resists sideways
-    /// motion with its tension), plus the ground penalty along y on the nodes
-    /// less than
-    /// @p ground_reach above the ground: the directional stiffness that the
-    /// nodal time-step bound and the mass scaling need. With slip, the
-    /// axial part is loop_axial_stiffness() in every direction. In 3D the
+    /// motion with its tension), plus the ground penalty along y
+    /// (node_ground_stiffness()): the directional stiffness that the nodal
+    /// time-step bound and the mass scaling need. With slip, the axial part
+    /// is loop_axial_stiffness() in every direction. In 3D without slip the
     /// elastic part is the constant-strain triangles' row sums.
     std::vector<SymmetricTensor<2, dim>>
-    nodal_stiffness(const double ground_reach
-                    = std::numeric_limits<double>::infinity()) const;
+    nodal_stiffness() const;
 
     /// Total current length (2D) or area (3D).
     double
