@@ -50,6 +50,14 @@ namespace fsgmpm
 
 
     std::string
+    pattern()
+    {
+      return registry().pattern();
+    }
+
+
+
+    std::string
     documentation()
     {
       return registry().documentation();

@@ -48,19 +48,14 @@ namespace fsgmpm
                           Patterns::List(Patterns::Double()),
                           "Initial velocity (m/s, at most 1e5 in magnitude); "
                           "in 3D a two-entry value means z = 0.");
-        {
-          std::string pattern;
-          for (const std::string &name : MaterialFactory::names())
-            pattern += (pattern.empty() ? "" : "|") + name;
-          prm.declare_entry("Material model",
-                            "linear elastic",
-                            Patterns::Selection(pattern),
-                            "Constitutive model of the body, one of the "
-                            "registered material models (a program adds its "
-                            "own with FSGMPM_REGISTER_MATERIAL, "
-                            "materials/material_factory.h): "
-                              + MaterialFactory::documentation() + ".");
-        }
+        prm.declare_entry("Material model",
+                          "linear elastic",
+                          Patterns::Selection(MaterialFactory::pattern()),
+                          "Constitutive model of the body, one of the "
+                          "registered material models (a program adds its "
+                          "own with FSGMPM_REGISTER_MATERIAL, "
+                          "materials/material_factory.h): "
+                            + MaterialFactory::documentation() + ".");
         prm.declare_entry("Volumetric smoothing",
                           "default",
                           Patterns::Selection("default|none|NMD|ANP|NMD+ANP"),

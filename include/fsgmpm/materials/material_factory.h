@@ -48,6 +48,10 @@ namespace fsgmpm
     std::vector<std::string>
     names();
 
+    /// "name1|name2|..." for the `Material model` pattern.
+    std::string
+    pattern();
+
     /// "name1: description1; name2: ..." for the parameter documentation.
     std::string
     documentation();

@@ -87,21 +87,21 @@ namespace fsgmpm
                   const Predicate           &counts,
                   std::vector<double>       &scale)
     {
-      scale.assign(options.size(), 0.);
-      bool any_capped = false;
+      // Point-volume weights (the default) need no pass over the points.
+      scale.assign(options.size(), 1.);
+      if (std::none_of(options.begin(), options.end(), [](const auto &o) {
+            return o.capped_weights;
+          }))
+        return;
+      // scale[m] first holds the sum of the material's counted volumes.
+      std::fill(scale.begin(), scale.end(), 0.);
       for (unsigned int p = particles.cell_start[c];
            p < particles.cell_start[c + 1];
            ++p)
-        {
-          const unsigned int m = particles.material_id[p];
-          if (options[m].capped_weights && counts(p))
-            {
-              scale[m] += particles.volume[p];
-              any_capped = true;
-            }
-        }
+        if (options[particles.material_id[p]].capped_weights && counts(p))
+          scale[particles.material_id[p]] += particles.volume[p];
       for (unsigned int m = 0; m < options.size(); ++m)
-        scale[m] = (any_capped && options[m].capped_weights && scale[m] > 0)
+        scale[m] = (options[m].capped_weights && scale[m] > 0)
                      ? std::min(1., grid.cell_volume[c] / scale[m])
                      : 1.;
     }
