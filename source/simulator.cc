@@ -155,7 +155,7 @@ namespace fsgmpm
   Simulator<dim>::reinitialize_state()
   {
     particles.sort_by_cell(grid->n_cells());
-    Stages::p2g(*grid, particles, nodes);
+    Stages::p2g(*grid, particles, nodes, params.stress_integration);
     if (membrane)
       Stages::membrane_p2g(*grid, *membrane, nodes);
     set_free_surface_fraction(Stages::detect_free_surface(
@@ -506,7 +506,7 @@ namespace fsgmpm
     // P2G first: the membrane's nodal time-step bound needs the nodal
     // masses (p2g does not depend on dt).
     timed(p2g_stage, [&] {
-      Stages::p2g(*grid, particles, nodes);
+      Stages::p2g(*grid, particles, nodes, params.stress_integration);
       if (membrane)
         Stages::membrane_p2g(*grid, *membrane, nodes);
       Stages::contact_normals(*grid, particles, nodes);
@@ -608,12 +608,21 @@ namespace fsgmpm
       });
     timed(nmd_stage, [&] {
       Stages::velocity_gradients(*grid, nodes, smoothing, particles);
+      if (params.stress_integration
+          == Stages::StressIntegration::nodal_projection)
+        Stages::nodal_velocity_gradients(*grid, nodes, smoothing, particles);
       Stages::store_affine_velocity(smoothing, particles);
       Stages::nmd(*grid, nodes, material_options, smoothing, particles);
     });
     timed(stress_update_stage, [&] {
-      Stages::stress_update(
-        *grid, nodes, materials, material_options, dt, smoothing, particles);
+      Stages::stress_update(*grid,
+                            nodes,
+                            materials,
+                            material_options,
+                            dt,
+                            smoothing,
+                            particles,
+                            params.stress_integration);
     });
     timed(free_surface_stage, [&] {
       set_free_surface_fraction(Stages::detect_free_surface(

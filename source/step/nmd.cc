@@ -7,25 +7,6 @@ namespace fsgmpm
   {
     template <int dim>
     void
-    velocity_gradients(const BackgroundGrid<dim> &grid,
-                       const NodalFields<dim>    &nodes,
-                       SmoothingFields<dim>      &smoothing,
-                       const ParticleStore<dim>  &particles)
-    {
-      // Linear simplices: grad v is constant in a cell.
-      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        Tensor<2, dim> L;
-        for (unsigned int k = 0; k < dim + 1; ++k)
-          L += outer_product(nodes.velocity[grid.cell_nodes[c][k]],
-                             grid.shape_gradients[c][k]);
-        smoothing.velocity_gradient[c] = L;
-      });
-    }
-
-
-
-    template <int dim>
-    void
     nmd(const BackgroundGrid<dim>          &grid,
         const NodalFields<dim>             &nodes,
         const std::vector<MaterialOptions> &options,
@@ -71,16 +52,6 @@ namespace fsgmpm
           });
     }
 
-    template void
-    velocity_gradients<2>(const BackgroundGrid<2> &,
-                          const NodalFields<2> &,
-                          SmoothingFields<2> &,
-                          const ParticleStore<2> &);
-    template void
-    velocity_gradients<3>(const BackgroundGrid<3> &,
-                          const NodalFields<3> &,
-                          SmoothingFields<3> &,
-                          const ParticleStore<3> &);
     template void
     nmd<2>(const BackgroundGrid<2> &,
            const NodalFields<2> &,

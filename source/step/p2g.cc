@@ -9,8 +9,10 @@ namespace fsgmpm
     void
     p2g(const BackgroundGrid<dim> &grid,
         const ParticleStore<dim>  &particles,
-        NodalFields<dim>          &nodes)
+        NodalFields<dim>          &nodes,
+        const StressIntegration    integration)
     {
+      const bool project = (integration == StressIntegration::nodal_projection);
       nodes.reset_active();
       for (const unsigned int c : particles.occupied_cells)
         nodes.activate(grid.cell_nodes[c]);
@@ -21,6 +23,7 @@ namespace fsgmpm
         Tensor<1, dim> mv[dim + 1];
         // Eq. (3): F_int,i = sum_p V_p sigma_p grad N_i, constant gradients.
         Tensor<2, dim> volume_stress;
+        Tensor<2, dim> nodal_volume_stress[dim + 1];
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
@@ -42,11 +45,20 @@ namespace fsgmpm
                          * (particles.affine_velocity[p]
                             * (grid.node_positions[grid.cell_nodes[c][k]]
                                - particles.position[p]));
-            const double V = particles.volume[p];
+            Tensor<2, dim> Vs;
+            const double   V = particles.volume[p];
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
-                volume_stress[i][j] += V * particles.stress[p][i][j];
+                Vs[i][j] = V * particles.stress[p][i][j];
+            volume_stress += Vs;
+            if (project)
+              for (unsigned int k = 0; k < dim + 1; ++k)
+                nodal_volume_stress[k] += lambda[k] * Vs;
           }
+        // With the projection, the points' own part (1 - theta_c) here,
+        // the projected part in the second pass.
+        if (project)
+          volume_stress *= 1. - CellLoops::projection_share(grid, particles, c);
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int n = grid.cell_nodes[c][k];
@@ -54,17 +66,43 @@ namespace fsgmpm
             nodes.momentum[n] += mv[k];
             nodes.internal_force[n]
               += volume_stress * grid.shape_gradients[c][k];
+            if (project)
+              {
+                nodes.volume_stress[n] += nodal_volume_stress[k];
+                nodes.support_volume[n] += grid.cell_volume[c] / (dim + 1);
+              }
           }
+      });
+
+      if (!project)
+        return;
+      // Second pass: theta_c times the cell integral of the projected
+      // volume-stress density sum_j N_j s_j (s_j = volume_stress_j /
+      // support_volume_j), int_c N_j dV = V_c / (dim + 1), times the
+      // constant gradients.
+      CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
+        const double theta = CellLoops::projection_share(grid, particles, c);
+        if (theta == 0)
+          return;
+        Tensor<2, dim> cell_stress;
+        for (const unsigned int n : grid.cell_nodes[c])
+          cell_stress += nodes.volume_stress[n] / nodes.support_volume[n];
+        cell_stress *= theta * grid.cell_volume[c] / (dim + 1);
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          nodes.internal_force[grid.cell_nodes[c][k]]
+            += cell_stress * grid.shape_gradients[c][k];
       });
     }
 
     template void
     p2g<2>(const BackgroundGrid<2> &,
            const ParticleStore<2> &,
-           NodalFields<2> &);
+           NodalFields<2> &,
+           StressIntegration);
     template void
     p2g<3>(const BackgroundGrid<3> &,
            const ParticleStore<3> &,
-           NodalFields<3> &);
+           NodalFields<3> &,
+           StressIntegration);
   } // namespace Stages
 } // namespace fsgmpm

@@ -16,30 +16,53 @@ namespace fsgmpm
                   const std::vector<MaterialOptions>           &options,
                   const double                                  dt,
                   SmoothingFields<dim>                         &smoothing,
-                  ParticleStore<dim>                           &particles)
+                  ParticleStore<dim>                           &particles,
+                  const StressIntegration                       integration)
     {
+      const bool per_point
+        = (integration == StressIntegration::nodal_projection);
       // Uses smoothing.velocity_gradient (velocity_gradients stage) and,
       // for NMD materials, the nodal rates of the nmd stage.
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        const Tensor<2, dim> &L = smoothing.velocity_gradient[c];
-        Tensor<2, 3>          L3;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            L3[i][j] = L[i][j];
-        PointKinematics cell_kin;
-        cell_kin.strain_rate = symmetrize(L3);
-        cell_kin.spin        = 0.5 * (L3 - transpose(L3));
-        cell_kin.rotation    = incremental_rotation(cell_kin.spin, dt);
-        const double rate    = trace(L);
+        const auto kinematics_of = [dt](const Tensor<2, dim> &L) {
+          Tensor<2, 3> L3;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              L3[i][j] = L[i][j];
+          PointKinematics kin;
+          kin.strain_rate = symmetrize(L3);
+          kin.spin        = 0.5 * (L3 - transpose(L3));
+          kin.rotation    = incremental_rotation(kin.spin, dt);
+          return kin;
+        };
+        const PointKinematics cell_kin
+          = kinematics_of(smoothing.velocity_gradient[c]);
 
+        // Before any volume changes: the share p2g used.
+        const double theta
+          = per_point ? CellLoops::projection_share(grid, particles, c) : 0.;
         thread_local std::vector<PointKinematics> kinematics;
         const unsigned int begin = particles.cell_start[c];
         const unsigned int end   = particles.cell_start[c + 1];
         kinematics.assign(end - begin, cell_kin);
         for (unsigned int p = begin; p < end; ++p)
           {
-            PointKinematics   &kin = kinematics[p - begin];
-            const unsigned int m   = particles.material_id[p];
+            PointKinematics &kin = kinematics[p - begin];
+            if (per_point && theta > 0)
+              {
+                // Work-conjugate to p2g's internal force: (1 - theta) L_c
+                // plus the interpolated nodal average.
+                const auto lambda = grid.barycentric(c, particles.position[p]);
+                Tensor<2, dim> L
+                  = (1. - theta) * smoothing.velocity_gradient[c];
+                for (unsigned int k = 0; k < dim + 1; ++k)
+                  L += lambda[k]
+                       * smoothing
+                           .nodal_velocity_gradient[grid.cell_nodes[c][k]];
+                kin = kinematics_of(L);
+              }
+            const double       rate = trace(kin.strain_rate);
+            const unsigned int m    = particles.material_id[p];
             if (options[m].nmd)
               {
                 // Eq. (25): the smoothed rate at the cell centre replaces the
@@ -86,7 +109,8 @@ namespace fsgmpm
                      const std::vector<MaterialOptions> &,
                      const double,
                      SmoothingFields<2> &,
-                     ParticleStore<2> &);
+                     ParticleStore<2> &,
+                     StressIntegration);
     template void
     stress_update<3>(const BackgroundGrid<3> &,
                      const NodalFields<3> &,
@@ -94,6 +118,7 @@ namespace fsgmpm
                      const std::vector<MaterialOptions> &,
                      const double,
                      SmoothingFields<3> &,
-                     ParticleStore<3> &);
+                     ParticleStore<3> &,
+                     StressIntegration);
   } // namespace Stages
 } // namespace fsgmpm

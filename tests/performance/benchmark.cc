@@ -339,8 +339,18 @@ main(int argc, char **argv)
 {
   try
     {
-      const unsigned int steps = (argc > 1) ? std::stoi(argv[1]) : 50;
-      run_case<2>("elastic_block_2d", steps);
+      const unsigned int steps    = (argc > 1) ? std::stoi(argv[1]) : 50;
+      const double block_baseline = run_case<2>("elastic_block_2d", steps);
+      // The internal force from the nodal stress projection (issue 14):
+      // the second pass over the cells and the per-point strain rate.
+      const std::string projection = "subsection Simulation\n"
+                                     "  set Stress integration = nodal "
+                                     "projection\n"
+                                     "end\n";
+      run_case<2>("elastic_block_2d_projection",
+                  steps,
+                  scene<2>() + projection,
+                  block_baseline);
       const double dam_break_baseline
         = run_case<2>("dam_break_2d", steps, dam_break_scene());
       // The same with APIC transfers (the cost of the affine velocity).
@@ -362,7 +372,16 @@ main(int argc, char **argv)
                       "  end\n"
                       "end\n",
                   dam_break_baseline);
-      run_case<3>("elastic_block_3d", std::max(2u, steps / 2));
+      run_case<2>("dam_break_2d_projection",
+                  steps,
+                  dam_break_scene() + projection,
+                  dam_break_baseline);
+      const double block_3d_baseline
+        = run_case<3>("elastic_block_3d", std::max(2u, steps / 2));
+      run_case<3>("elastic_block_3d_projection",
+                  std::max(2u, steps / 2),
+                  scene<3>() + projection,
+                  block_3d_baseline);
       run_case<3>("dam_break_3d",
                   std::max(2u, steps / 2),
                   dam_break_scene_3d());

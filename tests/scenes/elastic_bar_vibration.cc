@@ -18,7 +18,7 @@ namespace
 
   template <int dim>
   void
-  run_bar(const std::string &scheme)
+  run_bar(const std::string &scheme, const std::string &integration = "points")
   {
     const double c   = std::sqrt(E / rho);
     const double T   = 4 * L / c;
@@ -34,6 +34,9 @@ namespace
                         "  set Courant number = 0.5\n"
                         "  set Update scheme = "
                       + scheme
+                      + "\n"
+                        "  set Stress integration = "
+                      + integration
                       + "\n"
                         "end\n"
                         "subsection Grid\n";
@@ -95,7 +98,7 @@ namespace
     ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
     ASSERT_GE(crossings.size(), 9u);
     const double period = crossings[2] - crossings[0];
-    std::cout << "[ measured ] " << dim << "D " << scheme
+    std::cout << "[ measured ] " << dim << "D " << scheme << ", " << integration
               << ": particles = " << particles.size()
               << ", steps = " << sim.get_step() << ", first period = " << period
               << " s (analytic " << T << " s, error " << 100 * (period / T - 1)
@@ -114,4 +117,15 @@ TEST(ElasticBarVibration, TrianglesMUSL)
 TEST(ElasticBarVibration, TetrahedraMUSL)
 {
   run_bar<3>("MUSL");
+}
+
+// The internal force from the nodal stress projection (issue 14).
+TEST(ElasticBarVibration, TrianglesMUSLNodalProjection)
+{
+  run_bar<2>("MUSL", "nodal projection");
+}
+
+TEST(ElasticBarVibration, TetrahedraMUSLNodalProjection)
+{
+  run_bar<3>("MUSL", "nodal projection");
 }

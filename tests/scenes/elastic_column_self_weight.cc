@@ -19,7 +19,10 @@ using namespace fsgmpm;
 namespace
 {
   void
-  check_column(const std::string &damping, const std::string &label)
+  check_column(const std::string &damping,
+               const std::string &label,
+               const double       syy_tolerance   = 0.03,
+               const double       ratio_tolerance = 0.03)
   {
     const double H = 1.0, rho = 1000, g = 9.81, nu = 0.3, h = 0.05;
     auto         prm = test_tools::make_parameters(damping + R"(
@@ -122,8 +125,8 @@ end
               << 100 * worst_ratio << " % (" << cells.size() << " layers, "
               << "bottom stress reference " << rho * g * H << " Pa)"
               << std::endl;
-    EXPECT_LT(worst_syy, 0.03);
-    EXPECT_LT(worst_ratio, 0.03);
+    EXPECT_LT(worst_syy, syy_tolerance);
+    EXPECT_LT(worst_ratio, ratio_tolerance);
   }
 } // namespace
 
@@ -155,4 +158,27 @@ subsection Simulation
 end
 )",
                "kinetic damping, gravity ramp 0.02 s");
+}
+
+// The internal force from the nodal stress projection (issue 14) reaches
+// equilibrium as fast, but the points' stresses are those whose nodal
+// projection is in equilibrium: measured worst layer sigma_yy error 4.4%
+// (points: 0.43%) and lateral ratio 1.1% (points: 5e-4%), from the
+// one-sided nodal averages at the free top and the floor.
+TEST(ElasticColumnSelfWeight, NodalStressProjection)
+{
+  check_column(R"(
+subsection Damping
+  set Local damping coefficient = 0.5
+  set Energy tolerance = 1e-3
+  set Force tolerance = 1e-3
+  set Convergence window = 100
+end
+subsection Simulation
+  set Stress integration = nodal projection
+end
+)",
+               "nodal stress projection",
+               0.06,
+               0.02);
 }

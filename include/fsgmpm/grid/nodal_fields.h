@@ -30,6 +30,8 @@ namespace fsgmpm
       added_mass.assign(n_nodes, SymmetricTensor<2, dim>());
       contact_normal.assign(n_nodes, Tensor<1, dim>());
       contact_volume.assign(n_nodes, 0.);
+      volume_stress.assign(n_nodes, Tensor<2, dim>());
+      support_volume.assign(n_nodes, 0.);
       active_stamp.assign(n_nodes, 0u);
       active_nodes.clear();
       stamp = 0;
@@ -48,6 +50,8 @@ namespace fsgmpm
           velocity[i]       = Tensor<1, dim>();
           acceleration[i]   = Tensor<1, dim>();
           added_mass[i]     = SymmetricTensor<2, dim>();
+          volume_stress[i]  = Tensor<2, dim>();
+          support_volume[i] = 0.;
         }
       active_nodes.clear();
       ++stamp;
@@ -89,6 +93,13 @@ namespace fsgmpm
     /// Multi-field contact: at a node of field 0, sum_p N_i(x_p) V_p over
     /// the points of all fields (the volume the materials fill there).
     std::vector<double> contact_volume;
+
+    /// Nodal stress projection (Stress integration = nodal projection):
+    /// sum_p N_i(x_p) V_p sigma_p, the in-plane part.
+    std::vector<Tensor<2, dim>> volume_stress;
+    /// Nodal stress projection: sum over the occupied cells c around node i
+    /// of V_c / (dim + 1), the node's lumped share of the occupied volume.
+    std::vector<double> support_volume;
 
     std::vector<unsigned int> active_nodes;
     std::vector<unsigned int> active_stamp;

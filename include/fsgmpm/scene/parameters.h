@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <fsgmpm/grid/boundary_conditions.h>
+#include <fsgmpm/step/stress_integration.h>
 
 #include <map>
 #include <string>
@@ -39,6 +40,8 @@ namespace fsgmpm
     double       fixed_dt;
     bool         use_musl;
     bool         use_apic;
+    /// Internal force of Eq. (3): at the points or from the nodal projection.
+    Stages::StressIntegration stress_integration;
     /// FLIP-PIC blend: sub-cell noise decays over this time (s; 0: FLIP).
     double flip_noise_relaxation_time;
     /// Coulomb friction between velocity fields (multi-field contact).

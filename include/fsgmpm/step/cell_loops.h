@@ -106,6 +106,32 @@ namespace fsgmpm
                      : 1.;
     }
 
+    /**
+     * Stress integration = nodal projection: the share theta_c of cell @p c
+     * whose internal force comes from the nodal projection, the rest from
+     * its own points (Eq. 3). theta = 0 below a fill sum_p V_p / V_c of 1/2,
+     * 1 from 3/4 on, linear between: cells inside the material (a point
+     * crossing an edge there changes the fill by one point's share, 1/16 to
+     * 1/4) are projected, so their forces are continuous; cells at a free
+     * surface or a membrane, whose nodes carry little mass, keep the
+     * points' own forces (projected, such a cell would push its nearly
+     * empty nodes with the stress of the full cells beside it).
+     */
+    template <int dim>
+    double
+    projection_share(const BackgroundGrid<dim> &grid,
+                     const ParticleStore<dim>  &particles,
+                     const unsigned int         c)
+    {
+      double volume = 0;
+      for (unsigned int p = particles.cell_start[c];
+           p < particles.cell_start[c + 1];
+           ++p)
+        volume += particles.volume[p];
+      const double fill = volume / grid.cell_volume[c];
+      return std::clamp((fill - 0.5) / 0.25, 0., 1.);
+    }
+
     /// Call f(cell) for every occupied cell in parallel (no scatter).
     template <int dim, typename Function>
     void

@@ -58,6 +58,9 @@ namespace fsgmpm
     std::vector<unsigned int>   cell_counted;
     unsigned int                cell_count_stamp = 0;
     std::vector<Tensor<2, dim>> velocity_gradient;
+    /// Stress integration = nodal projection: the cell-volume weighted
+    /// nodal average of velocity_gradient (Stages::nodal_velocity_gradients).
+    std::vector<Tensor<2, dim>> nodal_velocity_gradient;
     unsigned int                n_nodes = 0;
   };
 } // namespace fsgmpm

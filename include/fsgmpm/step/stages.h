@@ -9,6 +9,7 @@
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/step/material_options.h>
 #include <fsgmpm/step/smoothing_fields.h>
+#include <fsgmpm/step/stress_integration.h>
 
 #include <memory>
 #include <vector>
@@ -42,7 +43,8 @@ namespace fsgmpm
     void
     p2g(const BackgroundGrid<dim> &grid,
         const ParticleStore<dim>  &particles,
-        NodalFields<dim>          &nodes);
+        NodalFields<dim>          &nodes,
+        const StressIntegration    integration = StressIntegration::points);
 
     /// What grid_update reports for energy bookkeeping and Eq. (30).
     struct GridUpdateResult
@@ -127,6 +129,19 @@ namespace fsgmpm
                        SmoothingFields<dim>      &smoothing,
                        const ParticleStore<dim>  &particles);
 
+    /// Stage 5a (Stress integration = nodal projection only): the nodal
+    /// average of the cells' velocity gradients with the weights of p2g's
+    /// projection, sum_c (V_c / (dim + 1)) L_c / V_j over the occupied
+    /// cells (NodalFields::support_volume): the strain rate that is
+    /// work-conjugate to the projected internal force, so the stress power
+    /// of the points equals the power of the nodal forces.
+    template <int dim>
+    void
+    nodal_velocity_gradients(const BackgroundGrid<dim> &grid,
+                             const NodalFields<dim>    &nodes,
+                             SmoothingFields<dim>      &smoothing,
+                             const ParticleStore<dim>  &particles);
+
     /// Stage 5a' (APIC only): the affine velocity C_p of every point is the
     /// velocity gradient of its cell, which on a linear simplex equals
     /// APIC's B_p D_p^-1 exactly. It is taken from the remapped velocities
@@ -152,7 +167,9 @@ namespace fsgmpm
     /// Stage 5c: per point, strain rate and spin with the NMD correction of
     /// Eq. (25) (cell-centre mean of the nodal rates), the volume update
     /// V <- V exp(dt tr d) with the same rate (limited by the material's
-    /// admissible volume ratio), and the stress update per material.
+    /// admissible volume ratio), and the stress update per material. The
+    /// velocity gradient is the cell's, or, with @p integration =
+    /// nodal_projection, sum_j N_j(x_p) Lbar_j of nodal_velocity_gradients.
     template <int dim>
     void
     stress_update(const BackgroundGrid<dim>                    &grid,
@@ -161,7 +178,9 @@ namespace fsgmpm
                   const std::vector<MaterialOptions>           &options,
                   const double                                  dt,
                   SmoothingFields<dim>                         &smoothing,
-                  ParticleStore<dim>                           &particles);
+                  ParticleStore<dim>                           &particles,
+                  const StressIntegration                       integration
+                  = StressIntegration::points);
 
     /// Stage 5d (paper Section 4, volume-fraction form): flag the points of
     /// detecting materials whose interpolated nodal volume fraction is at
