@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/scene/parameters.h>
 
 #include <fstream>
@@ -15,6 +17,30 @@ namespace fsgmpm
 {
   namespace test_tools
   {
+    /// The unit square or cube split into n^dim boxes of simplices.
+    template <int dim>
+    void
+    make_unit_box(const unsigned int n, dealii::Triangulation<dim> &tria)
+    {
+      dealii::Point<dim> upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        upper[d] = 1;
+      MeshGeneration::make_box<dim>(dealii::Point<dim>(),
+                                    upper,
+                                    std::vector<unsigned int>(dim, n),
+                                    tria);
+    }
+
+    /// A BackgroundGrid on make_unit_box().
+    template <int dim>
+    std::unique_ptr<BackgroundGrid<dim>>
+    make_unit_box_grid(const unsigned int n)
+    {
+      dealii::Triangulation<dim> tria;
+      make_unit_box(n, tria);
+      return std::make_unique<BackgroundGrid<dim>>(std::move(tria));
+    }
+
     /// A ParameterHandler with every fsgmpm parameter declared and the
     /// given prm text parsed (unknown entries throw, as for users).
     inline std::unique_ptr<dealii::ParameterHandler>

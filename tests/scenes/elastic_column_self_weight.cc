@@ -128,19 +128,19 @@ end
     EXPECT_LT(worst_syy, syy_tolerance);
     EXPECT_LT(worst_ratio, ratio_tolerance);
   }
-} // namespace
-
-TEST(ElasticColumnSelfWeight, LocalDamping)
-{
-  check_column(R"(
+  const std::string local_damping = R"(
 subsection Damping
   set Local damping coefficient = 0.5
   set Energy tolerance = 1e-3
   set Force tolerance = 1e-3
   set Convergence window = 100
 end
-)",
-               "local damping 0.5");
+)";
+} // namespace
+
+TEST(ElasticColumnSelfWeight, LocalDamping)
+{
+  check_column(local_damping, "local damping 0.5");
 }
 
 // Kinetic damping with a gravity ramp must reach the same static state.
@@ -167,13 +167,7 @@ end
 // one-sided nodal averages at the free top and the floor.
 TEST(ElasticColumnSelfWeight, NodalStressProjection)
 {
-  check_column(R"(
-subsection Damping
-  set Local damping coefficient = 0.5
-  set Energy tolerance = 1e-3
-  set Force tolerance = 1e-3
-  set Convergence window = 100
-end
+  check_column(local_damping + R"(
 subsection Simulation
   set Stress integration = nodal projection
 end

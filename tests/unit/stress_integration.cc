@@ -23,6 +23,8 @@
 #include <fsgmpm/step/stages.h>
 #include <gtest/gtest.h>
 
+#include "test_utilities.h"
+
 #include <random>
 
 using namespace fsgmpm;
@@ -35,13 +37,7 @@ namespace
   make_distorted_grid(const unsigned int n)
   {
     Triangulation<dim> tria;
-    Point<dim>         upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = 1;
-    MeshGeneration::make_box<dim>(Point<dim>(),
-                                  upper,
-                                  std::vector<unsigned int>(dim, n),
-                                  tria);
+    test_tools::make_unit_box(n, tria);
     GridTools::transform(
       [](const Point<dim> &p) {
         Point<dim> q = p;

@@ -22,6 +22,8 @@
 #include <fsgmpm/step/stages.h>
 #include <gtest/gtest.h>
 
+#include "test_utilities.h"
+
 #include <random>
 
 using namespace fsgmpm;
@@ -34,15 +36,7 @@ namespace
   std::unique_ptr<BackgroundGrid<dim>>
   make_grid()
   {
-    Triangulation<dim> tria;
-    Point<dim>         upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = 1;
-    MeshGeneration::make_box<dim>(Point<dim>(),
-                                  upper,
-                                  std::vector<unsigned int>(dim, 4),
-                                  tria);
-    return std::make_unique<BackgroundGrid<dim>>(std::move(tria));
+    return test_tools::make_unit_box_grid<dim>(4);
   }
 
   // A node in the middle of the floor y = 0 (away from the other walls).
