@@ -61,7 +61,9 @@ namespace fsgmpm
                           Patterns::Selection("default|none|NMD|ANP|NMD+ANP"),
                           "Volumetric-locking remedies (paper Section 3): NMD "
                           "(Eqs. 22-25), ANP (Eqs. 28-29), both, or none; "
-                          "default: NMD+ANP for fluids, none for solids.");
+                          "default: NMD+ANP for fluids, none for solids; "
+                          "none with Simulation/Stress integration = nodal "
+                          "projection (NMD or ANP are refused with it).");
         prm.declare_entry(
           "Smoothing weights",
           "point volume",
@@ -137,6 +139,13 @@ namespace fsgmpm
   std::vector<BodyDescription<dim>>
   BodyDescription<dim>::parse_bodies(ParameterHandler &prm)
   {
+    // The nodal stress projection averages the whole strain rate at the
+    // nodes; NMD or ANP on top of it is unstable (doc/accuracy_vs_cost.md).
+    prm.enter_subsection("Simulation");
+    const bool projection
+      = (prm.get("Stress integration") == "nodal projection");
+    prm.leave_subsection();
+
     std::vector<BodyDescription<dim>> bodies;
     prm.enter_subsection("Bodies");
     const unsigned int n = prm.get_integer("Number of bodies");
@@ -195,10 +204,19 @@ namespace fsgmpm
 
         const bool        fluid     = body.material->is_fluid();
         const std::string smoothing = prm.get("Volumetric smoothing");
-        body.options.nmd
-          = (smoothing == "default") ? fluid : (smoothing.find("NMD") == 0);
+        AssertThrow(
+          !projection || smoothing == "default" || smoothing == "none",
+          ExcMessage(
+            body.path + "/Volumetric smoothing = " + smoothing
+            + " cannot be combined with Simulation/Stress integration = "
+              "nodal projection, which already averages the strain rate at "
+              "the nodes (with NMD or ANP on top the dam break goes unstable "
+              "at 0.3 s): set it to none or default."));
+        body.options.nmd = (smoothing == "default")
+                             ? fluid && !projection
+                             : (smoothing.find("NMD") == 0);
         body.options.anp = (smoothing == "default")
-                             ? fluid
+                             ? fluid && !projection
                              : (smoothing.find("ANP") != std::string::npos);
         body.options.anp_interpolate
           = (prm.get("ANP mapping") == "interpolate");
