@@ -616,7 +616,6 @@ namespace fsgmpm
     });
     timed(stress_update_stage, [&] {
       Stages::stress_update(*grid,
-                            nodes,
                             materials,
                             material_options,
                             dt,

@@ -10,8 +10,7 @@ namespace fsgmpm
   {
     template <int dim>
     void
-    stress_update(const BackgroundGrid<dim> &grid,
-                  const NodalFields<dim> & /*nodes*/,
+    stress_update(const BackgroundGrid<dim>                    &grid,
                   const std::vector<std::unique_ptr<Material>> &materials,
                   const std::vector<MaterialOptions>           &options,
                   const double                                  dt,
@@ -48,19 +47,13 @@ namespace fsgmpm
         for (unsigned int p = begin; p < end; ++p)
           {
             PointKinematics &kin = kinematics[p - begin];
-            if (per_point && theta > 0)
-              {
-                // Work-conjugate to p2g's internal force: (1 - theta) L_c
-                // plus the interpolated nodal average.
-                const auto lambda = grid.barycentric(c, particles.position[p]);
-                Tensor<2, dim> L
-                  = (1. - theta) * smoothing.velocity_gradient[c];
-                for (unsigned int k = 0; k < dim + 1; ++k)
-                  L += lambda[k]
-                       * smoothing
-                           .nodal_velocity_gradient[grid.cell_nodes[c][k]];
-                kin = kinematics_of(L);
-              }
+            if (per_point)
+              kin = kinematics_of(point_velocity_gradient(
+                grid,
+                smoothing,
+                c,
+                theta,
+                grid.barycentric(c, particles.position[p])));
             const double       rate = trace(kin.strain_rate);
             const unsigned int m    = particles.material_id[p];
             if (options[m].nmd)
@@ -104,7 +97,6 @@ namespace fsgmpm
 
     template void
     stress_update<2>(const BackgroundGrid<2> &,
-                     const NodalFields<2> &,
                      const std::vector<std::unique_ptr<Material>> &,
                      const std::vector<MaterialOptions> &,
                      const double,
@@ -113,7 +105,6 @@ namespace fsgmpm
                      StressIntegration);
     template void
     stress_update<3>(const BackgroundGrid<3> &,
-                     const NodalFields<3> &,
                      const std::vector<std::unique_ptr<Material>> &,
                      const std::vector<MaterialOptions> &,
                      const double,

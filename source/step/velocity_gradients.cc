@@ -35,7 +35,8 @@ namespace fsgmpm
       // power sum_c grad N_i^c . theta_c int_c sum_j N_j s_j dV . v_i
       // equals sum_p V_p sigma_p : sum_j N_j(x_p) Lbar_j with
       // Lbar_j = sum_c theta_c (V_c / (dim + 1)) L_c / V_j over the
-      // occupied cells; the points' own part (1 - theta_c) works with L_c.
+      // occupied cells, and the points' own part (1 - theta_c) with L_c
+      // (Stages::point_velocity_gradient).
       auto &Lbar = smoothing.nodal_velocity_gradient;
       if (Lbar.size() != grid.n_nodes())
         Lbar.assign(grid.n_nodes(), Tensor<2, dim>());

@@ -142,6 +142,28 @@ namespace fsgmpm
                              SmoothingFields<dim>      &smoothing,
                              const ParticleStore<dim>  &particles);
 
+    /// With the nodal stress projection, the velocity gradient of a point
+    /// at barycentric coordinates @p lambda in cell @p c whose projection
+    /// share is @p theta (CellLoops::projection_share): (1 - theta) L_c +
+    /// sum_k lambda_k Lbar_k. Every point takes the nodal part, also in
+    /// cells with theta = 0: their stress enters the nodal projection of
+    /// the projected cells beside them. Then sum_p V_p sigma_p : L_p is the
+    /// power of p2g's internal forces exactly (test stress_integration).
+    template <int dim>
+    inline Tensor<2, dim>
+    point_velocity_gradient(const BackgroundGrid<dim>         &grid,
+                            const SmoothingFields<dim>        &smoothing,
+                            const unsigned int                 c,
+                            const double                       theta,
+                            const std::array<double, dim + 1> &lambda)
+    {
+      Tensor<2, dim> L = (1. - theta) * smoothing.velocity_gradient[c];
+      for (unsigned int k = 0; k < dim + 1; ++k)
+        L += lambda[k]
+             * smoothing.nodal_velocity_gradient[grid.cell_nodes[c][k]];
+      return L;
+    }
+
     /// Stage 5a' (APIC only): the affine velocity C_p of every point is the
     /// velocity gradient of its cell, which on a linear simplex equals
     /// APIC's B_p D_p^-1 exactly. It is taken from the remapped velocities
@@ -173,7 +195,6 @@ namespace fsgmpm
     template <int dim>
     void
     stress_update(const BackgroundGrid<dim>                    &grid,
-                  const NodalFields<dim>                       &nodes,
                   const std::vector<std::unique_ptr<Material>> &materials,
                   const std::vector<MaterialOptions>           &options,
                   const double                                  dt,
