@@ -38,6 +38,21 @@ using Stages::StressIntegration;
 
 namespace
 {
+  // Barycentric coordinates of a random point of a simplex.
+  template <int dim>
+  std::array<double, dim + 1>
+  random_barycentric(std::mt19937 &rng)
+  {
+    std::uniform_real_distribution<double> u(0, 1);
+    std::array<double, dim + 1>            l;
+    double                                 sum = 0;
+    for (auto &v : l)
+      sum += (v = u(rng));
+    for (auto &v : l)
+      v /= sum;
+    return l;
+  }
+
   template <int dim>
   std::unique_ptr<BackgroundGrid<dim>>
   make_distorted_grid(const unsigned int n)
@@ -121,20 +136,13 @@ namespace
   void
   check_shape_functions(const unsigned int n)
   {
-    const auto                             grid = make_distorted_grid<dim>(n);
-    std::mt19937                           rng(7);
-    std::uniform_real_distribution<double> u(0, 1);
-    double worst_unity = 0, worst_linear = 0, worst_gradients = 0;
+    const auto   grid = make_distorted_grid<dim>(n);
+    std::mt19937 rng(7);
+    double       worst_unity = 0, worst_linear = 0, worst_gradients = 0;
     for (unsigned int c = 0; c < grid->n_cells(); ++c)
       {
         // A random point of the cell.
-        std::array<double, dim + 1> l;
-        double                      sum = 0;
-        for (auto &v : l)
-          sum += (v = u(rng));
-        for (auto &v : l)
-          v /= sum;
-        const Point<dim> x      = grid->position(c, l);
+        const Point<dim> x = grid->position(c, random_barycentric<dim>(rng));
         const auto       lambda = grid->barycentric(c, x);
         double           unity  = 0;
         Point<dim>       xx;
@@ -299,7 +307,7 @@ namespace
   {
     const auto   grid = make_distorted_grid<dim>(dim == 2 ? 6 : 3);
     std::mt19937 rng(11);
-    std::uniform_real_distribution<double>     u(0, 1), s(-1, 1);
+    std::uniform_real_distribution<double>     s(-1, 1);
     std::vector<std::pair<Point<dim>, double>> points;
     std::vector<SymmetricTensor<2, 3>>         stresses;
     for (unsigned int c = 0; c < grid->n_cells(); ++c)
@@ -312,13 +320,7 @@ namespace
                                                  : 0.3;
         for (unsigned int q = 0; q < 4; ++q)
           {
-            std::array<double, dim + 1> l;
-            double                      sum = 0;
-            for (auto &v : l)
-              sum += (v = u(rng));
-            for (auto &v : l)
-              v /= sum;
-            points.emplace_back(grid->position(c, l),
+            points.emplace_back(grid->position(c, random_barycentric<dim>(rng)),
                                 fill * grid->cell_volume[c] / 4);
           }
       }
