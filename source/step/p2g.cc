@@ -24,6 +24,7 @@ namespace fsgmpm
         // Eq. (3): F_int,i = sum_p V_p sigma_p grad N_i, constant gradients.
         Tensor<2, dim> volume_stress;
         Tensor<2, dim> nodal_volume_stress[dim + 1];
+        double         points_volume = 0;
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
@@ -52,13 +53,18 @@ namespace fsgmpm
                 Vs[i][j] = V * particles.stress[p][i][j];
             volume_stress += Vs;
             if (project)
-              for (unsigned int k = 0; k < dim + 1; ++k)
-                nodal_volume_stress[k] += lambda[k] * Vs;
+              {
+                points_volume += V;
+                for (unsigned int k = 0; k < dim + 1; ++k)
+                  nodal_volume_stress[k] += lambda[k] * Vs;
+              }
           }
         // With the projection, the points' own part (1 - theta_c) here,
         // the projected part in the second pass.
         if (project)
-          volume_stress *= 1. - CellLoops::projection_share(grid, particles, c);
+          volume_stress *= 1.
+                           - CellLoops::projection_share(points_volume,
+                                                         grid.cell_volume[c]);
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int n = grid.cell_nodes[c][k];

@@ -34,8 +34,11 @@ namespace fsgmpm
           kin.rotation    = incremental_rotation(kin.spin, dt);
           return kin;
         };
+        // With the projection every point gets its own kinematics below;
+        // the cell's (and its rotation) are not needed then.
         const PointKinematics cell_kin
-          = kinematics_of(smoothing.velocity_gradient[c]);
+          = per_point ? PointKinematics()
+                      : kinematics_of(smoothing.velocity_gradient[c]);
 
         // Before any volume changes: the share p2g used.
         const double theta

@@ -117,6 +117,14 @@ namespace fsgmpm
      * points' own forces (projected, such a cell would push its nearly
      * empty nodes with the stress of the full cells beside it).
      */
+    inline double
+    projection_share(const double points_volume, const double cell_volume)
+    {
+      const double fill = points_volume / cell_volume;
+      return std::clamp((fill - 0.5) / 0.25, 0., 1.);
+    }
+
+    /// projection_share() of cell @p c from its points' volumes.
     template <int dim>
     double
     projection_share(const BackgroundGrid<dim> &grid,
@@ -128,8 +136,7 @@ namespace fsgmpm
            p < particles.cell_start[c + 1];
            ++p)
         volume += particles.volume[p];
-      const double fill = volume / grid.cell_volume[c];
-      return std::clamp((fill - 0.5) / 0.25, 0., 1.);
+      return projection_share(volume, grid.cell_volume[c]);
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).
