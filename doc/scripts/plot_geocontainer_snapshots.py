@@ -1,6 +1,7 @@
 """Snapshots of a geocontainer run like the paper's Figs. 11-14
 (doc/geocontainer_validation.md): water points coloured by pressure
-(0-9 kPa) in the top row and by vorticity (-90 to 90 1/s) in the bottom
+(0-9 kPa; the pressure of the stress the grid integrates,
+`projected_pressure`, where the output has it) in the top row and by vorticity (-90 to 90 1/s) in the bottom
 row, the sand in grey and the membrane as a line, at the given times.
 
     /usr/bin/python3 doc/scripts/plot_geocontainer_snapshots.py out.png \
@@ -55,8 +56,10 @@ for j, t in enumerate(times):
     x, y = fields["Points"][:, 0], fields["Points"][:, 1]
     water = fields["body_id"] != 0
     pts, segments = membrane_points(nearest(membranes, t)[1])
+    pressure = ("projected_pressure" if "projected_pressure" in fields
+                else "pressure")
     for i, (name, scale, cmap, vmin, vmax) in enumerate(
-            (("pressure", 1e-3, "viridis", 0, 9),
+            ((pressure, 1e-3, "viridis", 0, 9),
              ("vorticity", 1.0, "coolwarm", -90, 90))):
         ax = axes[i][j]
         sc = ax.scatter(x[water], y[water], c=scale * fields[name][water],

@@ -1,5 +1,6 @@
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/particle_output.h>
+#include <fsgmpm/step/stages.h>
 
 #include <iomanip>
 #include <sstream>
@@ -23,7 +24,7 @@ namespace fsgmpm
                                      const BackgroundGrid<dim> *grid,
                                      const NodalFields<dim>    *nodes)
   {
-    const unsigned int n_fields = dim + n_stress_components(dim) + 7;
+    const unsigned int n_fields = dim + n_stress_components(dim) + 8;
     patches.resize(particles.size());
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
@@ -64,6 +65,28 @@ namespace fsgmpm
               }
           }
         patch.data(f++, 0) = omega;
+        // The pressure of the stress field the grid integrates, as the
+        // mean of its dim normal components (in 2D the in-plane mean, as the
+        // grid sees no sigma_zz; for a fluid it is the pressure): with the
+        // nodal stress projection, the projected nodal stresses
+        // s_j = volume_stress_j / support_volume_j interpolated to the
+        // point (the points' own pressures carry a sub-cell pattern that the
+        // projection does not see); with the points' own stresses (Eq. 3),
+        // the point's.
+        double in_plane_trace = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          in_plane_trace += s[d][d];
+        double         projected = -in_plane_trace / dim;
+        Tensor<2, dim> s_projected;
+        if (grid != nullptr && nodes != nullptr
+            && Stages::projected_stress(
+              *grid,
+              *nodes,
+              particles.cell[p],
+              grid->barycentric(particles.cell[p], particles.position[p]),
+              s_projected))
+          projected = -trace(s_projected) / dim;
+        patch.data(f++, 0) = projected;
       }
   }
 
@@ -85,7 +108,8 @@ namespace fsgmpm
                           "material_id",
                           "body_id",
                           "free_surface",
-                          "vorticity"})
+                          "vorticity",
+                          "projected_pressure"})
       names.emplace_back(n);
     return names;
   }

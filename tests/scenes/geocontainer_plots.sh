@@ -5,7 +5,15 @@
 # each write a non-empty PNG; doc/scripts/water_compaction.py must find
 # the water filling its squares exactly at t = 0 (1.000: the body filler's
 # regular points) and within 1% at 0.05 s (measured 1.000, before the
-# compaction of doc/geocontainer_validation.md section 6 sets in). Uses
+# compaction of doc/geocontainer_validation.md section 6 sets in);
+# doc/scripts/geocontainer_audit.py must read the bag sinking at 0.30-0.42
+# m/s at 0.05 s (measured 0.358) with the water's centre of mass not yet
+# moved (|rise| < 0.2 mm, measured 0.00: the tip has barely entered);
+# doc/scripts/pressure_pattern.py must find the projected pressure near
+# hydrostatic far from the bag (mean within 0.2 kPa, measured at most 0.11
+# as the entry's pressure wave passes; standard deviation below 0.1 kPa,
+# measured 0.06) and smoother than the points' own at 0.05 s (measured
+# 0.06 against 0.18 kPa). Uses
 # Debian's python3-matplotlib.
 set -euo pipefail
 exe=$1
@@ -27,6 +35,20 @@ awk 'NR == 2 && ($3 < 0.9995 || $3 > 1.0005) { bad = 1 }
      NR > 2 && ($3 < 0.99 || $3 > 1.01) { bad = 1 }
      END { exit bad || NR != 7 }' "$work/compaction" \
   || { echo "water_compaction.py: unexpected values"; exit 1; }
+/usr/bin/python3 "$src/doc/scripts/geocontainer_audit.py" "$work/run" 0.05 \
+  > "$work/audit"
+cat "$work/audit"
+awk 'NR == 2 && $2 > 0.30 && $2 < 0.42 && $6 > -0.2 && $6 < 0.2 { ok = 1 }
+     END { exit !ok || NR != 2 }' "$work/audit" \
+  || { echo "geocontainer_audit.py: unexpected values"; exit 1; }
+/usr/bin/python3 "$src/doc/scripts/pressure_pattern.py" "$work/run" \
+  > "$work/pattern"
+cat "$work/pattern"
+awk 'NR > 1 { rows++; if ($6 > 0.1 || $5 < -0.2 || $5 > 0.2) bad = 1
+             last_own = $4; last_projected = $6 }
+     END { exit bad || rows != 6 || last_projected >= last_own }' \
+  "$work/pattern" \
+  || { echo "pressure_pattern.py: unexpected values"; exit 1; }
 for f in v.png s.png; do
   [ -s "$work/$f" ] || { echo "missing $f"; exit 1; }
 done

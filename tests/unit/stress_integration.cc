@@ -13,6 +13,9 @@
 //   membrane_validation.md); with the projection no step of 1/2000 of the
 //   path changes a nodal force by more than 1e-3 J: the change is spread
 //   over the path;
+// - the projected stress field interpolated to the points
+//   (Stages::projected_stress, the VTU's projected_pressure) is a uniform
+//   stress to 1e-12 at every point, at the occupied region's edge too;
 // - the stress update's strain rate (Stages::point_velocity_gradient) is
 //   work-conjugate to the projected force: stress power = force power to
 //   round-off, with cells of projection share 1, 0.4 and 0.
@@ -186,8 +189,38 @@ namespace
         if (!half || centroid[0] < 0.5)
           points.insert(points.end(), pattern.begin(), pattern.end());
       }
-    ParticleStore<dim> particles;
-    build_store(*grid, points, random_stress<dim>(rng), particles);
+    ParticleStore<dim>          particles;
+    const SymmetricTensor<2, 3> sigma = random_stress<dim>(rng);
+    build_store(*grid, points, sigma, particles);
+
+    // The projected stress field (the VTU's projected_pressure) is the
+    // points' uniform stress at every point, also at the edge of the
+    // occupied region; after p2g at the points there is none.
+    NodalFields<dim> nodes;
+    nodes.resize(grid->n_nodes());
+    Stages::p2g(*grid, particles, nodes, StressIntegration::nodal_projection);
+    double worst_projected = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      {
+        const unsigned int c = particles.cell[p];
+        Tensor<2, dim>     s;
+        ASSERT_TRUE(Stages::projected_stress(
+          *grid, nodes, c, grid->barycentric(c, particles.position[p]), s));
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            worst_projected
+              = std::max(worst_projected, std::abs(s[i][j] - sigma[i][j]));
+      }
+    EXPECT_LT(worst_projected / sigma.norm(), 1e-12);
+    Stages::p2g(*grid, particles, nodes, StressIntegration::points);
+    Tensor<2, dim> unused;
+    EXPECT_FALSE(Stages::projected_stress(
+      *grid,
+      nodes,
+      particles.cell[0],
+      grid->barycentric(particles.cell[0], particles.position[0]),
+      unused));
+
     const auto f_points
       = internal_forces(*grid, particles, StressIntegration::points);
     const auto f_projected

@@ -46,6 +46,34 @@ namespace fsgmpm
         NodalFields<dim>          &nodes,
         const StressIntegration    integration = StressIntegration::points);
 
+    /// The stress field that p2g's nodal projection integrates, at the
+    /// point of barycentric coordinates @p lambda in cell @p c:
+    /// sum_k lambda_k s_k with s_k = volume_stress_k / support_volume_k
+    /// (in-plane components in 2D). Returns false, leaving @p stress alone,
+    /// where a node of the cell has no support (the last p2g did not project
+    /// there, or integrated at the points).
+    template <int dim>
+    inline bool
+    projected_stress(const BackgroundGrid<dim>         &grid,
+                     const NodalFields<dim>            &nodes,
+                     const unsigned int                 c,
+                     const std::array<double, dim + 1> &lambda,
+                     Tensor<2, dim>                    &stress)
+    {
+      if (nodes.support_volume.empty())
+        return false;
+      Tensor<2, dim> s;
+      for (unsigned int k = 0; k < dim + 1; ++k)
+        {
+          const unsigned int n = grid.cell_nodes[c][k];
+          if (!(nodes.support_volume[n] > 0))
+            return false;
+          s += (lambda[k] / nodes.support_volume[n]) * nodes.volume_stress[n];
+        }
+      stress = s;
+      return true;
+    }
+
     /// What grid_update reports for energy bookkeeping and Eq. (30).
     struct GridUpdateResult
     {
