@@ -40,7 +40,11 @@ def main():
         sys.exit("geocontainer_audit.py: %s needs the columns %s (the "
                  "scene monitors of prm/geocontainer_*.prm)"
                  % (path, ", ".join(needed)))
-    times = [float(t) for t in sys.argv[2:]] or [0.2, 0.4, 0.8]
+    try:
+        times = [float(t) for t in sys.argv[2:]] or [0.2, 0.4, 0.8]
+    except ValueError as e:
+        sys.exit("geocontainer_audit.py: the times must be numbers in "
+                 "seconds (%s)" % e)
     end = float(rows[-1]["time"])
     if not sys.argv[2:] and end not in times:
         times.append(end)

@@ -65,14 +65,14 @@ namespace fsgmpm
               }
           }
         patch.data(f++, 0) = omega;
-        // The pressure of the stress field the grid integrates, as the
-        // mean of its dim normal components (in 2D the in-plane mean, as the
-        // grid sees no sigma_zz; for a fluid it is the pressure): with the
-        // nodal stress projection, the projected nodal stresses
-        // s_j = volume_stress_j / support_volume_j interpolated to the
-        // point (the points' own pressures carry a sub-cell pattern that the
-        // projection does not see); with the points' own stresses (Eq. 3),
-        // the point's.
+        // The pressure of the projected stress field, as the mean of its dim
+        // normal components (in 2D the in-plane mean, as the grid sees no
+        // sigma_zz; for a fluid it is the pressure): with the nodal stress
+        // projection, s_j = volume_stress_j / support_volume_j interpolated
+        // to the point, what the grid integrates in cells filled to 3/4 or
+        // more (CellLoops::projection_share; the points' own pressures carry
+        // a sub-cell pattern the projection does not see); with the points'
+        // own stresses (Eq. 3), the point's.
         double in_plane_trace = 0;
         for (unsigned int d = 0; d < dim; ++d)
           in_plane_trace += s[d][d];
