@@ -122,7 +122,9 @@ namespace fsgmpm
                              + ", but the mesh has no boundary face with that "
                                "id."));
 
-    constraints = std::make_unique<NodalConstraints<dim>>(*grid, params.walls);
+    constraints = std::make_unique<NodalConstraints<dim>>(*grid,
+                                                          params.walls,
+                                                          params.moving_wall);
     nodes.resize(grid->n_nodes());
 
     Point<dim> cell_size;
@@ -574,6 +576,8 @@ namespace fsgmpm
     double                   displacement_ratio = 0;
     unsigned int             lost = 0, membrane_outside = 0;
 
+    // Walls with prescribed motion act on v^{n+1}.
+    constraints->set_time(time + dt);
     timed(grid_update_stage, [&] {
       grid_result = Stages::grid_update(
         *constraints, gravity, params.local_damping, dt, nodes);

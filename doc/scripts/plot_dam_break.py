@@ -2,13 +2,15 @@
 """Compare water-column-collapse runs with Martin & Moyce (1952), n^2 = 2.
 
 Usage: plot_dam_break.py OUT.png RUN_DIR[:LABEL] [RUN_DIR[:LABEL] ...]
-       [--reference FILE] [--w0 0.114] [--g 9.81] [--n2 2]
+       [--reference FILE] [--w0 0.114] [--g 9.81] [--n2 2] [--others]
 
 Reads monitors.csv (columns time, front_position, column_height) of each run,
 normalises as Martin & Moyce (front: T = t sqrt(2g/a), Z = z/a; height:
 tau = t sqrt(g/a), H = eta/(n^2 a)), prints the errors against the experiment
 (RMS of Z over the tabulated T <= 3.3, RMS of H over tau <= 3, no time shift)
-and draws both series over the experimental points.
+and draws both series over the experimental points. --others adds the
+fronts of tests/reference/dam_break_fronts_n2.csv (Martin & Moyce's
+smaller column and Koshizuka & Oka), which the errors do not use.
 Uses Debian's /usr/bin/python3 with python3-matplotlib and python3-numpy.
 """
 import argparse
@@ -62,6 +64,7 @@ def main():
     parser.add_argument("--w0", type=float, default=0.114)
     parser.add_argument("--g", type=float, default=9.81)
     parser.add_argument("--n2", type=float, default=2.0)
+    parser.add_argument("--others", action="store_true")
     args = parser.parse_args()
     ref = read_reference(args.reference)
 
@@ -71,6 +74,19 @@ def main():
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
     ax1.plot(ref["front"][:, 0], ref["front"][:, 1], "ko", label="Martin & Moyce (1952)")
     ax2.plot(ref["height"][:, 0], ref["height"][:, 1], "ko", label="Martin & Moyce (1952)")
+    if args.others:
+        others = {}
+        with open(os.path.join(here, "..", "..", "tests", "reference",
+                               "dam_break_fronts_n2.csv")) as f:
+            rows = [r for r in f if not r.startswith("#")]
+        for row in csv.DictReader(rows):
+            others.setdefault(row["series"], []).append(
+                (float(row["time_dimensionless"]), float(row["value"])))
+        for key, marker, label in (
+                ("mm_small", "ks", "Martin & Moyce, a = 1.125 in"),
+                ("ko", "k^", "Koshizuka & Oka (1996)")):
+            data = np.array(others[key])
+            ax1.plot(data[:, 0], data[:, 1], marker, mfc="none", label=label)
     for run in args.runs:
         run_dir, _, label = run.partition(":")
         mon = read_monitors(run_dir)

@@ -78,8 +78,13 @@ namespace fsgmpm
   template <int dim>
   NodalConstraints<dim>::NodalConstraints(
     const BackgroundGrid<dim>                         &grid,
-    const std::map<types::boundary_id, WallCondition> &walls)
+    const std::map<types::boundary_id, WallCondition> &walls,
+    const MovingWallParameters                        &moving_wall_parameters)
   {
+    if (moving_wall_parameters.enabled)
+      moving_wall
+        = std::make_unique<MovingWall<dim>>(moving_wall_parameters, grid);
+
     // Accumulate, per node and boundary id, the sum of outward face normals.
     std::vector<std::map<types::boundary_id, Tensor<1, dim>>> node_walls(
       grid.n_nodes());

@@ -339,6 +339,7 @@ namespace fsgmpm
     }
     prm.leave_subsection();
 
+    MovingWallParameters::declare_parameters(prm);
     BodyDescription<dim>::declare_parameters(prm);
     MembraneDescription<dim>::declare_parameters(prm);
     SceneMonitors<dim>::declare_parameters(prm);
@@ -506,6 +507,7 @@ namespace fsgmpm
     walls = parse_wall_conditions(prm.get("Boundary conditions"),
                                   "Grid/Boundary conditions");
     prm.leave_subsection();
+    moving_wall.parse_parameters(prm, dim);
 
     prm.enter_subsection("Output");
     output_directory    = prm.get("Directory");

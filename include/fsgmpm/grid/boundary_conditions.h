@@ -5,8 +5,10 @@
 #include <deal.II/base/types.h>
 
 #include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/moving_wall.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,7 +51,24 @@ namespace fsgmpm
   {
   public:
     NodalConstraints(const BackgroundGrid<dim>                         &grid,
-                     const std::map<types::boundary_id, WallCondition> &walls);
+                     const std::map<types::boundary_id, WallCondition> &walls,
+                     const MovingWallParameters &moving_wall = {});
+
+    /// Move the moving wall (if any) to time @p t; call before each grid
+    /// update with the time the updated velocity belongs to.
+    void
+    set_time(const double t)
+    {
+      if (moving_wall)
+        moving_wall->set_time(t);
+    }
+
+    /// The moving wall, or nullptr.
+    const MovingWall<dim> *
+    get_moving_wall() const
+    {
+      return moving_wall.get();
+    }
 
     /**
      * Apply the wall conditions, contact force included, to the velocity
@@ -83,6 +102,11 @@ namespace fsgmpm
     void
     project_out(const unsigned int node, Tensor<1, dim> &f) const
     {
+      if (moving_wall && moving_wall->is_active(node))
+        {
+          const Tensor<1, dim> &n = moving_wall->outward_normal();
+          f -= (f * n) * n;
+        }
       const unsigned int idx = node_to_entry[node];
       if (idx == BackgroundGrid<dim>::invalid)
         return;
@@ -99,7 +123,8 @@ namespace fsgmpm
     bool
     is_constrained(const unsigned int node) const
     {
-      return node_to_entry[node] != BackgroundGrid<dim>::invalid;
+      return node_to_entry[node] != BackgroundGrid<dim>::invalid
+             || (moving_wall && moving_wall->is_active(node));
     }
 
   private:
@@ -109,6 +134,15 @@ namespace fsgmpm
               Tensor<1, dim>    &v,
               const bool         with_friction) const
     {
+      // The moving wall first: frictionless and unilateral, on the velocity
+      // relative to the wall (a slip wall in the wall's frame).
+      if (moving_wall && moving_wall->is_active(node))
+        {
+          const Tensor<1, dim> &n  = moving_wall->outward_normal();
+          const double          vn = (v - moving_wall->current_velocity()) * n;
+          if (vn > 0)
+            v -= vn * n;
+        }
       const unsigned int idx = node_to_entry[node];
       if (idx == BackgroundGrid<dim>::invalid)
         return;
@@ -146,8 +180,9 @@ namespace fsgmpm
       std::array<WallType, dim>       type;
       std::array<double, dim>         friction;
     };
-    std::vector<Entry>        entries;
-    std::vector<unsigned int> node_to_entry;
+    std::vector<Entry>               entries;
+    std::vector<unsigned int>        node_to_entry;
+    std::unique_ptr<MovingWall<dim>> moving_wall;
   };
 } // namespace fsgmpm
 

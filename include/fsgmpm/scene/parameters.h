@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <fsgmpm/grid/boundary_conditions.h>
+#include <fsgmpm/grid/moving_wall.h>
 #include <fsgmpm/step/stress_integration.h>
 
 #include <map>
@@ -75,6 +76,7 @@ namespace fsgmpm
     std::string                                 mesh_file;
     double                                      extrusion_thickness;
     std::map<types::boundary_id, WallCondition> walls;
+    MovingWallParameters                        moving_wall;
 
     // Output
     std::string  output_directory;

@@ -1,0 +1,117 @@
+#ifndef fsgmpm_grid_moving_wall_h
+#define fsgmpm_grid_moving_wall_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <fsgmpm/grid/background_grid.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Input of a rigid plane wall with a prescribed velocity history: the gate
+   * of a dam-break experiment, lifted while the column collapses. Declared
+   * and parsed here, so the component owns its subsection
+   * ("Moving wall").
+   */
+  struct MovingWallParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Read and validate the subsection (@p dim components per vector).
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+
+    bool enabled = false;
+    /// Axis of the wall's normal and the sign of the outward normal (from
+    /// the material into the wall): material side "-x" gives +x.
+    unsigned int axis         = 0;
+    double       outward_sign = 1.;
+    /// Opposite corners of the wall at t = 0 (equal along the axis).
+    std::vector<double> lower, upper;
+    /// Samples (t, v_0, ..., v_{dim-1}), t strictly increasing from 0; the
+    /// velocity is piecewise linear between them and held after the last.
+    std::vector<std::array<double, 4>> history;
+  };
+
+  /**
+   * A rigid, frictionless plane wall moving in its own plane with a
+   * prescribed, piecewise-linear velocity history (a lifted gate). It acts
+   * like a slip wall of NodalConstraints on the grid nodes that lie in its
+   * plane and inside its current extent: the velocity relative to the wall
+   * may not point into it (unilateral), the tangential one is free. Because
+   * the wall moves only in its own plane and is frictionless, its force
+   * does no work, so the energy bookkeeping needs no wall term.
+   *
+   * The wall is one-sided: it holds the material on its material side. The
+   * plane must pass through grid nodes (a grid line of a box mesh), which
+   * the constructor checks.
+   */
+  template <int dim>
+  class MovingWall
+  {
+  public:
+    MovingWall(const MovingWallParameters &parameters,
+               const BackgroundGrid<dim>  &grid);
+
+    /// Prescribed velocity at time @p t.
+    Tensor<1, dim>
+    velocity(const double t) const;
+
+    /// Displacement from t = 0 to @p t (the exact integral of velocity()).
+    Tensor<1, dim>
+    displacement(const double t) const;
+
+    /// Move the wall to time @p t: update its velocity and which nodes of
+    /// its plane lie inside its extent.
+    void
+    set_time(const double t);
+
+    bool
+    is_active(const unsigned int node) const
+    {
+      return active[node] != 0;
+    }
+
+    /// Unit normal from the material into the wall.
+    const Tensor<1, dim> &
+    outward_normal() const
+    {
+      return normal;
+    }
+
+    const Tensor<1, dim> &
+    current_velocity() const
+    {
+      return wall_velocity;
+    }
+
+    /// Number of grid nodes the wall acts on at the current time.
+    unsigned int
+    n_active_nodes() const
+    {
+      return n_active;
+    }
+
+  private:
+    MovingWallParameters       parameters;
+    const BackgroundGrid<dim> &grid;
+    Tensor<1, dim>             normal;
+    Tensor<1, dim>             wall_velocity;
+    /// Tolerance of "on the plane" and "inside the extent" (m).
+    double tolerance;
+    /// Grid nodes in the wall's plane (any extent).
+    std::vector<unsigned int>  plane_nodes;
+    std::vector<unsigned char> active;
+    unsigned int               n_active = 0;
+  };
+} // namespace fsgmpm
+
+#endif
