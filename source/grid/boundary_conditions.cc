@@ -143,6 +143,30 @@ namespace fsgmpm
         node_to_entry[i] = entries.size();
         entries.push_back(e);
       }
+
+    // The moving wall is applied before the static walls at a node; that
+    // is a projection only if their normals are orthogonal or parallel.
+    if (moving_wall)
+      for (const unsigned int i : moving_wall->nodes_in_plane())
+        if (node_to_entry[i] != BackgroundGrid<dim>::invalid)
+          {
+            const Entry &e = entries[node_to_entry[i]];
+            for (unsigned int k = 0; k < (e.fixed ? 0 : e.n_walls); ++k)
+              {
+                const double c
+                  = std::abs(e.normal[k] * moving_wall->outward_normal());
+                AssertThrow(c < 1e-8 || c > 1 - 1e-8,
+                            ExcMessage(
+                              "Moving wall: the wall meets a wall of "
+                              "Grid/Boundary conditions at an angle (at the "
+                              "grid node at "
+                              + Utilities::to_string(grid.node_positions[i][0])
+                              + ", "
+                              + Utilities::to_string(grid.node_positions[i][1])
+                              + "); only walls at right angles to it or "
+                                "parallel to it are supported."));
+              }
+          }
   }
 
   template class NodalConstraints<2>;

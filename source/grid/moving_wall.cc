@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace fsgmpm
@@ -14,14 +15,31 @@ namespace fsgmpm
   {
     const std::string section = "Moving wall/";
 
+    std::string
+    to_text(const double x)
+    {
+      std::ostringstream out;
+      out << x;
+      return out.str();
+    }
+
+    /// Numbers separated by @p separator ("," or whitespace when " ").
     std::vector<double>
     read_numbers(const std::string &text,
                  const std::string &separator,
                  const std::string &path)
     {
+      std::vector<std::string> items;
+      if (separator == " ")
+        {
+          std::istringstream in(text);
+          for (std::string item; in >> item;)
+            items.push_back(item);
+        }
+      else
+        items = Utilities::split_string_list(text, separator);
       std::vector<double> values;
-      for (const std::string &item :
-           Utilities::split_string_list(text, separator))
+      for (const std::string &item : items)
         {
           std::istringstream in(item);
           double             x;
@@ -110,19 +128,22 @@ namespace fsgmpm
                            + " comma-separated "
                              "coordinates each."));
     const double scale = std::abs(upper[axis]) + std::abs(lower[axis]) + 1.;
+    const std::string axis_name(1, static_cast<char>('x' + axis));
     AssertThrow(std::abs(upper[axis] - lower[axis]) <= 1e-12 * scale,
-                ExcMessage(section
-                           + "the wall is a plane normal to its "
-                             "material side's axis: Lower corner and Upper "
-                             "corner must have the same coordinate along it ("
-                           + side + "), not " + std::to_string(lower[axis])
-                           + " and " + std::to_string(upper[axis]) + "."));
+                ExcMessage(section + "Lower corner and " + section
+                           + "Upper corner: the wall is a plane normal to "
+                           + axis_name + " (Material side = " + side
+                           + "), so both corners need the same " + axis_name
+                           + ", not " + to_text(lower[axis]) + " and "
+                           + to_text(upper[axis]) + "."));
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(d == axis || lower[d] < upper[d],
-                  ExcMessage(section
-                             + "Upper corner must be larger than "
-                               "Lower corner in every coordinate but the "
-                               "normal one."));
+                  ExcMessage(section + "Upper corner must be larger than "
+                             + section + "Lower corner in "
+                             + std::string(1, static_cast<char>('x' + d))
+                             + " (every coordinate but the normal one, "
+                             + axis_name + "); got " + to_text(lower[d])
+                             + " and " + to_text(upper[d]) + "."));
 
     const std::string help = " Expected 't: v_x v_y"
                              + std::string(dim == 3 ? " v_z" : "")
@@ -165,38 +186,81 @@ namespace fsgmpm
 
 
   template <int dim>
-  MovingWall<dim>::MovingWall(const MovingWallParameters &parameters,
-                              const BackgroundGrid<dim>  &grid)
-    : parameters(parameters)
-    , grid(grid)
+  MovingWall<dim>::MovingWall(const MovingWallParameters &wall_parameters,
+                              const BackgroundGrid<dim>  &background_grid)
+    : parameters(wall_parameters)
+    , grid(background_grid)
   {
     Assert(parameters.enabled, ExcInternalError());
-    normal[parameters.axis] = parameters.outward_sign;
+    const unsigned int axis = parameters.axis;
+    normal[axis]            = parameters.outward_sign;
 
-    // Round-off of mesh generation, relative to the mesh's extent.
-    double extent = 0;
-    for (unsigned int i = 0; i < grid.n_base_nodes(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        extent = std::max(extent, std::abs(grid.node_positions[i][d]));
-    tolerance = 1e-9 * (extent + 1.);
+    // "On the plane" and "inside the extent" to round-off of the mesh:
+    // relative to its shortest edge.
+    double shortest = std::numeric_limits<double>::max();
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      for (unsigned int i = 0; i < dim + 1; ++i)
+        for (unsigned int j = i + 1; j < dim + 1; ++j)
+          shortest
+            = std::min(shortest,
+                       grid.node_positions[grid.cell_nodes[c][i]].distance(
+                         grid.node_positions[grid.cell_nodes[c][j]]));
+    tolerance = 1e-6 * shortest;
 
-    const double plane = parameters.lower[parameters.axis];
+    const double      plane = parameters.lower[axis];
+    const std::string where = "Moving wall/Lower corner and Upper corner: the "
+                              "wall's plane "
+                              + std::string(1, static_cast<char>('x' + axis))
+                              + " = " + to_text(plane);
     for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-      if (std::abs(grid.node_positions[i][parameters.axis] - plane)
-          <= tolerance)
+      if (std::abs(grid.node_positions[i][axis] - plane) <= tolerance)
         plane_nodes.push_back(i);
     active.assign(grid.n_nodes(), 0);
     set_time(0.);
     AssertThrow(n_active > 0,
-                ExcMessage(
-                  "Moving wall: no grid node lies in the wall's plane ("
-                  + std::string(1, 'x' + parameters.axis) + " = "
-                  + std::to_string(plane)
-                  + ") inside its extent at t = 0. The wall acts on grid "
-                    "nodes, so its plane must be a grid line (for a box "
-                    "mesh, a multiple of the cell size from Grid/Lower "
-                    "corner) "
-                    "and its extent must cover some of them."));
+                ExcMessage(where
+                           + " holds no grid node inside the wall's "
+                             "extent at t = 0. The wall acts on grid "
+                             "nodes, so its plane must be a grid line "
+                             "(for a box mesh, a multiple of the cell "
+                             "size from Grid/Lower corner) and its "
+                             "extent must cover some of them."));
+
+    // A cell that the plane cuts inside the wall's extent would let the
+    // material through between the wall's nodes (an unstructured mesh
+    // whose edges do not follow the plane).
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      {
+        double lowest = 0, highest = 0;
+        bool   overlaps = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != axis)
+            {
+              double cell_min = std::numeric_limits<double>::max(),
+                     cell_max = -cell_min;
+              for (unsigned int k = 0; k < dim + 1; ++k)
+                {
+                  const double x
+                    = grid.node_positions[grid.cell_nodes[c][k]][d];
+                  cell_min = std::min(cell_min, x);
+                  cell_max = std::max(cell_max, x);
+                }
+              overlaps = overlaps && cell_max > parameters.lower[d] + tolerance
+                         && cell_min < parameters.upper[d] - tolerance;
+            }
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          {
+            const double s
+              = grid.node_positions[grid.cell_nodes[c][k]][axis] - plane;
+            lowest  = std::min(lowest, s);
+            highest = std::max(highest, s);
+          }
+        AssertThrow(!overlaps || lowest > -tolerance || highest < tolerance,
+                    ExcMessage(where + " cuts through cell " + std::to_string(c)
+                               + " inside the wall's extent: the mesh's edges "
+                                 "must follow the plane there, or the "
+                                 "material passes between the wall's nodes."));
+      }
   }
 
 
@@ -226,15 +290,21 @@ namespace fsgmpm
   Tensor<1, dim>
   MovingWall<dim>::displacement(const double t) const
   {
+    Assert(t >= 0, ExcMessage("The wall's motion starts at t = 0."));
     // Trapezoidal rule on each linear piece: exact.
     const auto    &h = parameters.history;
     Tensor<1, dim> u;
     for (unsigned int k = 0; k < h.size() && h[k][0] < t; ++k)
       {
-        const double t1 = (k + 1 < h.size()) ? std::min(t, h[k + 1][0]) : t;
-        const Tensor<1, dim> v0 = velocity(h[k][0]);
-        const Tensor<1, dim> v1 = velocity(t1);
-        u += 0.5 * (t1 - h[k][0]) * (v0 + v1);
+        const bool   last = (k + 1 == h.size());
+        const double t1   = last ? t : std::min(t, h[k + 1][0]);
+        const double s = last ? 0. : (t1 - h[k][0]) / (h[k + 1][0] - h[k][0]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double v1
+              = h[k][1 + d] + (last ? 0. : s * (h[k + 1][1 + d] - h[k][1 + d]));
+            u[d] += 0.5 * (t1 - h[k][0]) * (h[k][1 + d] + v1);
+          }
       }
     return u;
   }

@@ -76,7 +76,7 @@ expect_error "unknown material model" "Material model.*does not match" --set "Bo
 expect_error "ground level not a number" "Membrane/Ground level must be a number or none" "$g" --set "Membrane/Ground level=floor"
 
 w="$2/../prm/water_column_collapse_n2.prm"
-expect_error "gate off the grid lines" "Moving wall: no grid node lies in the wall's plane" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Lower corner=0.115, 0" --set "Moving wall/Upper corner=0.115, 0.3"
+expect_error "gate off the grid lines" "Moving wall/Lower corner and Upper corner: the wall's plane x = 0.115 holds no grid node" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Lower corner=0.115, 0" --set "Moving wall/Upper corner=0.115, 0.3"
 expect_error "gate pushed along its normal" "Moving wall/Velocity history: <0: 1 2> moves the wall along its normal" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Velocity history=0: 1 2"
 
 echo "bad input: $passed passed, $failures failed"

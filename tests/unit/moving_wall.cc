@@ -7,8 +7,10 @@
 //   may not point into it (slip, frictionless), may leave it, and keeps its
 //   tangential part; nodes below the lifted edge are free; Eq. (30)'s
 //   force criterion drops the normal component there;
+// - the other sides: a lid (material side +y) sliding in x; a gate on a
+//   roller floor (the corner node keeps both constraints);
 // - input checks: a plane off the grid lines, a normal velocity, times not
-//   starting at 0.
+//   starting at 0, spacing.
 
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/moving_wall.h>
@@ -131,6 +133,48 @@ TEST(MovingWall, Gate3D)
   check_gate<3>();
 }
 
+TEST(MovingWall, LidAndCorner)
+{
+  const auto grid = test_tools::make_unit_box_grid<2>(4);
+  auto       prm  = test_tools::make_parameters("");
+  test_tools::set(*prm, "Moving wall/Enabled", "true");
+  test_tools::set(*prm, "Moving wall/Material side", "+y");
+  test_tools::set(*prm, "Moving wall/Lower corner", "0, 0.5");
+  test_tools::set(*prm, "Moving wall/Upper corner", "0.5, 0.5");
+  test_tools::set(*prm, "Moving wall/Velocity history", "0: 1  0");
+  MovingWallParameters lid;
+  lid.parse_parameters(*prm, 2);
+  NodalConstraints<2> constraints(*grid, {}, lid);
+  EXPECT_EQ(constraints.get_moving_wall()->n_active_nodes(), 3u);
+  constraints.set_time(0.25); // x from 0.25 to 0.75
+  EXPECT_EQ(constraints.get_moving_wall()->n_active_nodes(), 3u);
+  EXPECT_NEAR(constraints.get_moving_wall()->displacement(0.25)[0],
+              0.25,
+              1e-15);
+  const unsigned int i = node_at(*grid, 0.75, 0.5);
+  ASSERT_TRUE(constraints.is_constrained(i));
+  EXPECT_FALSE(constraints.is_constrained(node_at(*grid, 0., 0.5)));
+  // Outward normal -y: the material above may not move down into the lid.
+  Tensor<1, 2> v({0.3, -1.});
+  constraints.apply(i, v);
+  EXPECT_EQ(v, (Tensor<1, 2>({0.3, 0.})));
+  v = Tensor<1, 2>({0.3, 1.});
+  constraints.apply(i, v);
+  EXPECT_EQ(v, (Tensor<1, 2>({0.3, 1.})));
+
+  // A gate standing on a roller floor: the corner node holds both.
+  std::map<types::boundary_id, WallCondition> floor;
+  floor[2].type = WallType::roller;
+  NodalConstraints<2> gated(*grid, floor, gate<2>("0: 0 1"));
+  const unsigned int  corner = node_at(*grid, 0.5, 0.);
+  v                          = Tensor<1, 2>({1., -1.});
+  gated.apply(corner, v);
+  EXPECT_EQ(v, (Tensor<1, 2>()));
+  v = Tensor<1, 2>({-1., 1.});
+  gated.apply(corner, v);
+  EXPECT_EQ(v, (Tensor<1, 2>({-1., 0.})));
+}
+
 TEST(MovingWall, BadInput)
 {
   const auto grid = test_tools::make_unit_box_grid<2>(4);
@@ -162,4 +206,5 @@ TEST(MovingWall, BadInput)
             std::string::npos);
   EXPECT_NE(message("0: 0").find("2 velocity components"), std::string::npos);
   EXPECT_NE(message("0: 0 x").find("is not a number"), std::string::npos);
+  EXPECT_EQ(message("0:  0   1 ,0.1: 0 2"), "accepted");
 }

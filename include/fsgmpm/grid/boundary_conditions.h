@@ -52,7 +52,7 @@ namespace fsgmpm
   public:
     NodalConstraints(const BackgroundGrid<dim>                         &grid,
                      const std::map<types::boundary_id, WallCondition> &walls,
-                     const MovingWallParameters &moving_wall = {});
+                     const MovingWallParameters &moving_wall_parameters = {});
 
     /// Move the moving wall (if any) to time @p t; call before each grid
     /// update with the time the updated velocity belongs to.

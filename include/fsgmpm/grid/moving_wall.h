@@ -58,8 +58,10 @@ namespace fsgmpm
   class MovingWall
   {
   public:
-    MovingWall(const MovingWallParameters &parameters,
-               const BackgroundGrid<dim>  &grid);
+    /// Throws if the wall's plane holds no grid node inside its extent, or
+    /// cuts a cell there (the material would pass between its nodes).
+    MovingWall(const MovingWallParameters &wall_parameters,
+               const BackgroundGrid<dim>  &background_grid);
 
     /// Prescribed velocity at time @p t.
     Tensor<1, dim>
@@ -77,6 +79,7 @@ namespace fsgmpm
     bool
     is_active(const unsigned int node) const
     {
+      AssertIndexRange(node, active.size());
       return active[node] != 0;
     }
 
@@ -93,6 +96,14 @@ namespace fsgmpm
       return wall_velocity;
     }
 
+    /// The grid nodes in the wall's plane (whether inside its extent or
+    /// not).
+    const std::vector<unsigned int> &
+    nodes_in_plane() const
+    {
+      return plane_nodes;
+    }
+
     /// Number of grid nodes the wall acts on at the current time.
     unsigned int
     n_active_nodes() const
@@ -105,7 +116,8 @@ namespace fsgmpm
     const BackgroundGrid<dim> &grid;
     Tensor<1, dim>             normal;
     Tensor<1, dim>             wall_velocity;
-    /// Tolerance of "on the plane" and "inside the extent" (m).
+    /// Tolerance of "on the plane" and "inside the extent" (m): 1e-6 of
+    /// the mesh's shortest edge.
     double tolerance;
     /// Grid nodes in the wall's plane (any extent).
     std::vector<unsigned int>  plane_nodes;
