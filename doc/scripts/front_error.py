@@ -5,7 +5,7 @@ Usage: front_error.py [--width A] [--zmax Z] RUN_DIR [RUN_DIR ...]
 
 For each run (a directory with monitors.csv holding front_position) prints
 the RMS error in Z = z/a of the front against
-  mm     Martin & Moyce (1952) tables, T <= 3.33 (tests/reference/
+  mm     Martin & Moyce (1952) tables, T <= 3.3 (tests/reference/
          martin_moyce_1952_n2.csv), without shift, and after the best
          constant delay s >= 0 of the simulation (as the ctest reports it);
   small  Martin & Moyce Fig. 3, a = 1.125 in;
@@ -90,7 +90,7 @@ def main(argv):
         def inside(points):
             return [(T, Z) for T, Z in points if T <= t_end and Z <= zmax]
 
-        ref = inside([p for p in mm if p[0] <= 3.33 + 1e-9])
+        ref = inside([p for p in mm if p[0] <= 3.3 + 1e-9])
         best = min((rms(front, ref, 0.005 * k), 0.005 * k)
                    for k in range(201))
         print(f"{os.path.basename(os.path.normpath(run)):40s} "

@@ -173,8 +173,8 @@ TEST(WaterColumnCollapseValidation, MartinMoyceN2WithoutShift)
 // holds the column in hydrostatic equilibrium (the front moves less than
 // 0.01 mm in 0.1 s; measured 1.2e-4 mm); lifted at the Froude-scaled speed of
 // Lobovsky et al. (2014), V = 1.95 sqrt(g H) = 2.92 m/s, it delays the front:
-// unshifted RMS 0.271 measured (0.322 without gate), the best delay 17.5 ms
-// (20.6).
+// unshifted RMS 0.271 measured (0.306 without gate), the best delay 17.5 ms
+// (20.2).
 TEST(WaterColumnCollapse, Gate)
 {
   {
