@@ -26,22 +26,19 @@ import sys
 G = 9.81
 
 
-def read_reference(path):
-    series = {}
-    with open(path) as f:
-        rows = [r for r in f if r.strip() and not r.startswith("#")]
-    for row in csv.reader(rows[1:]):
-        series.setdefault(row[0], []).append((float(row[1]), float(row[2])))
-    return series
+# The reference data and the interpolation of doc/scripts/front_error.py.
+from front_error import interpolate, read_reference  # noqa: E402
 
 
-def interpolate(samples, x):
-    if x <= samples[0][0]:
-        return samples[0][1]
-    for (t0, v0), (t1, v1) in zip(samples, samples[1:]):
-        if x <= t1:
-            return v0 + (v1 - v0) * (x - t0) / (t1 - t0)
-    return samples[-1][1]
+def variants(base, runs):
+    """add(name, Section__Sub__Name_with_spaces=value, ...): a run with the
+    base settings and these changes ('__' is '/', '_' is ' ')."""
+    def add(name, **changes):
+        s = dict(base)
+        for key, value in changes.items():
+            s[key.replace("__", "/").replace("_", " ")] = value
+        runs[name] = s
+    return add
 
 
 # ---- the dam break (n^2 = 2, prm/water_column_collapse_n2.prm) ------------
@@ -50,12 +47,7 @@ def dam_break_settings():
     base = {"Grid/Cell size": "0.0057", k: "2.5e6"}
     cells = {"10": "0.0114", "20": "0.0057", "40": "0.00285"}
     runs = {}
-
-    def add(name, **changes):
-        s = dict(base)
-        for key, value in changes.items():
-            s[key.replace("__", "/").replace("_", " ")] = value
-        runs[name] = s
+    add = variants(base, runs)
 
     for n, h in cells.items():
         add(f"cells{n}", Grid__Cell_size=h)
@@ -89,8 +81,7 @@ def dam_break_result(run_dir, source):
         rows = list(csv.DictReader(f))
     front = [(float(r["time"]) * scale, float(r["front_position"]) / a)
              for r in rows]
-    mm = read_reference(os.path.join(
-        source, "tests", "reference", "martin_moyce_1952_n2.csv"))["front"]
+    mm = read_reference("martin_moyce_1952_n2.csv")["front"]
     mm = [p for p in mm if p[0] <= 3.3 + 1e-9]
     e_exp = math.sqrt(sum((interpolate(front, T) - Z) ** 2 for T, Z in mm)
                       / len(mm))
@@ -114,12 +105,7 @@ def granular_settings():
     base = {a: str(ASPECT)}
     cells = {"10": "0.02", "20": "0.01", "40": "0.005"}
     runs = {}
-
-    def add(name, **changes):
-        s = dict(base)
-        for key, value in changes.items():
-            s[key.replace("__", "/").replace("_", " ")] = value
-        runs[name] = s
+    add = variants(base, runs)
 
     for n, h in cells.items():
         add(f"cells{n}", Grid__Cell_size=h)
