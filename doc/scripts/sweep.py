@@ -216,8 +216,8 @@ def main(argv):
         if r["stable"] and r["difference_from_finest"] < best:
             best = r["difference_from_finest"]
             pareto.append(r["run"])
-    print(f"{scene}: error = {error_name}; difference = relative RMS of the "
-          f"result from the finest run; * = on the Pareto front of "
+    print(f"{scene}: error = {error_name}; difference = relative difference "
+          f"of the result from the finest run; * = on the Pareto front of "
           f"difference against wall time ({threads} threads)")
     print(f"{'run':22s} {'error':>7s} {'diff':>7s} {'wall_s':>8s} "
           f"{'steps':>8s} {'points':>7s}")
