@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/grid/boundary_conditions.h>
+#include <fsgmpm/io/format.h>
 
 #include <sstream>
 
@@ -160,9 +161,7 @@ namespace fsgmpm
                               "Moving wall: the wall meets a wall of "
                               "Grid/Boundary conditions at an angle (at the "
                               "grid node at "
-                              + Utilities::to_string(grid.node_positions[i][0])
-                              + ", "
-                              + Utilities::to_string(grid.node_positions[i][1])
+                              + format(grid.node_positions[i])
                               + "); only walls at right angles to it or "
                                 "parallel to it are supported."));
               }

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/grid/moving_wall.h>
+#include <fsgmpm/io/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,14 +15,6 @@ namespace fsgmpm
   namespace
   {
     const std::string section = "Moving wall/";
-
-    std::string
-    to_text(const double x)
-    {
-      std::ostringstream out;
-      out << x;
-      return out.str();
-    }
 
     /// Numbers separated by @p separator ("," or whitespace when " ").
     std::vector<double>
@@ -134,16 +127,16 @@ namespace fsgmpm
                            + "Upper corner: the wall is a plane normal to "
                            + axis_name + " (Material side = " + side
                            + "), so both corners need the same " + axis_name
-                           + ", not " + to_text(lower[axis]) + " and "
-                           + to_text(upper[axis]) + "."));
+                           + ", not " + format(lower[axis]) + " and "
+                           + format(upper[axis]) + "."));
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(d == axis || lower[d] < upper[d],
                   ExcMessage(section + "Upper corner must be larger than "
                              + section + "Lower corner in "
                              + std::string(1, static_cast<char>('x' + d))
                              + " (every coordinate but the normal one, "
-                             + axis_name + "); got " + to_text(lower[d])
-                             + " and " + to_text(upper[d]) + "."));
+                             + axis_name + "); got " + format(lower[d])
+                             + " and " + format(upper[d]) + "."));
 
     const std::string help = " Expected 't: v_x v_y"
                              + std::string(dim == 3 ? " v_z" : "")
@@ -211,7 +204,7 @@ namespace fsgmpm
     const std::string where = "Moving wall/Lower corner and Upper corner: the "
                               "wall's plane "
                               + std::string(1, static_cast<char>('x' + axis))
-                              + " = " + to_text(plane);
+                              + " = " + format(plane);
     for (unsigned int i = 0; i < grid.n_nodes(); ++i)
       if (std::abs(grid.node_positions[i][axis] - plane) <= tolerance)
         plane_nodes.push_back(i);
