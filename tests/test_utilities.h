@@ -52,27 +52,6 @@ namespace fsgmpm
       return prm;
     }
 
-    /// Set the parameter "Section/Sub/Name" (as fsgmpm --set does).
-    inline void
-    set(dealii::ParameterHandler &prm,
-        const std::string        &path,
-        const std::string        &value)
-    {
-      const auto   slash = path.rfind('/');
-      unsigned int depth = 0;
-      for (std::size_t begin = 0; slash != std::string::npos && begin < slash;)
-        {
-          const auto end = path.find('/', begin);
-          prm.enter_subsection(path.substr(begin, end - begin));
-          ++depth;
-          begin = end + 1;
-        }
-      prm.set(slash == std::string::npos ? path : path.substr(slash + 1),
-              value);
-      for (; depth > 0; --depth)
-        prm.leave_subsection();
-    }
-
 #ifdef FSGMPM_TEST_SOURCE_DIR
     /// make_parameters() of a scene file shipped in prm/ (path relative to
     /// the repository's prm directory), for tests that run a shipped scene.

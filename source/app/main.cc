@@ -13,6 +13,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/default_scene.h>
+#include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>
 
@@ -60,38 +61,9 @@ namespace
     AssertThrow(eq != std::string::npos && eq > 0,
                 ExcMessage("--set needs \"Section/Sub/Name=value\"; got <" + arg
                            + ">."));
-    const std::string        path  = Utilities::trim(arg.substr(0, eq));
-    const std::string        value = Utilities::trim(arg.substr(eq + 1));
-    std::vector<std::string> parts = Utilities::split_string_list(path, '/');
-    const std::string        name  = parts.back();
-    parts.pop_back();
-    for (const auto &s : parts)
-      prm.enter_subsection(s);
-    try
-      {
-        prm.set(name, value);
-      }
-    catch (ParameterHandler::ExcEntryUndeclared &)
-      {
-        for (unsigned int i = 0; i < parts.size(); ++i)
-          prm.leave_subsection();
-        AssertThrow(false,
-                    ExcMessage("--set: there is no parameter <" + path
-                               + ">. Run fsgmpm --print-parameters for the "
-                                 "full list."));
-      }
-    catch (ExceptionBase &e)
-      {
-        for (unsigned int i = 0; i < parts.size(); ++i)
-          prm.leave_subsection();
-        std::ostringstream info;
-        e.print_info(info);
-        AssertThrow(false,
-                    ExcMessage("--set: invalid value <" + value + "> for <"
-                               + path + ">: " + Utilities::trim(info.str())));
-      }
-    for (unsigned int i = 0; i < parts.size(); ++i)
-      prm.leave_subsection();
+    fsgmpm::set_parameter(prm,
+                          Utilities::trim(arg.substr(0, eq)),
+                          Utilities::trim(arg.substr(eq + 1)));
   }
 
   /// Undo ParameterHandler's name mangling in its JSON output ("_20" for a

@@ -14,6 +14,7 @@
 
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/moving_wall.h>
+#include <fsgmpm/scene/parameter_path.h>
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
@@ -137,11 +138,11 @@ TEST(MovingWall, LidAndCorner)
 {
   const auto grid = test_tools::make_unit_box_grid<2>(4);
   auto       prm  = test_tools::make_parameters("");
-  test_tools::set(*prm, "Moving wall/Enabled", "true");
-  test_tools::set(*prm, "Moving wall/Material side", "+y");
-  test_tools::set(*prm, "Moving wall/Lower corner", "0, 0.5");
-  test_tools::set(*prm, "Moving wall/Upper corner", "0.5, 0.5");
-  test_tools::set(*prm, "Moving wall/Velocity history", "0: 1  0");
+  set_parameter(*prm, "Moving wall/Enabled", "true");
+  set_parameter(*prm, "Moving wall/Material side", "+y");
+  set_parameter(*prm, "Moving wall/Lower corner", "0, 0.5");
+  set_parameter(*prm, "Moving wall/Upper corner", "0.5, 0.5");
+  set_parameter(*prm, "Moving wall/Velocity history", "0: 1  0");
   MovingWallParameters lid;
   lid.parse_parameters(*prm, 2);
   NodalConstraints<2> constraints(*grid, {}, lid);
