@@ -601,7 +601,12 @@ namespace fsgmpm
     });
     if (params.use_musl)
       timed(remap_stage, [&] {
-        Stages::remap(*grid, particles, *constraints, nodes, membrane.get());
+        Stages::remap(*grid,
+                      particles,
+                      *constraints,
+                      nodes,
+                      membrane.get(),
+                      params.apic_affine_remap);
         Stages::field_contact(*grid,
                               *constraints,
                               params.contact_friction,

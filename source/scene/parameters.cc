@@ -100,12 +100,20 @@ namespace fsgmpm
       prm.declare_entry(
         "Velocity transfer",
         "FLIP",
-        Patterns::Selection("FLIP|APIC"),
+        Patterns::Selection("FLIP|APIC|APIC affine remap"),
         "How the grid velocity goes back to the points. FLIP (paper Eq. 19): "
         "v_p += dt a(x_p); keeps sub-cell velocity noise on the points that "
         "the grid does not see. APIC (Jiang et al. 2015): v_p = v(x_p) plus "
         "the cell's velocity gradient, mapped back affinely; drops the "
-        "sub-cell noise, keeps resolved (affine) motion.");
+        "sub-cell noise, keeps resolved (affine) motion; the MUSL remap of "
+        "Eq. (20) smooths the velocity once more each step, so its "
+        "dissipation depends on the time step. APIC affine remap (MUSL "
+        "only): the remap carries the affine term too, which on linear "
+        "simplices keeps the grid-updated velocity, at the nodes whose "
+        "points fill at least 1/4 of their volume (blended to the mass "
+        "average below, where the remap suppresses the small-mass "
+        "instability): less dissipation, independent of the time step "
+        "(doc/accuracy_vs_cost.md).");
       prm.declare_entry(
         "Stress integration",
         "points",
@@ -351,12 +359,17 @@ namespace fsgmpm
   Parameters<dim>::Parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Simulation");
-    end_time           = prm.get_double("End time");
-    max_steps          = prm.get_integer("Maximum number of steps");
-    courant            = prm.get_double("Courant number");
-    fixed_dt           = prm.get_double("Fixed time step");
-    use_musl           = (prm.get("Update scheme") == "MUSL");
-    use_apic           = (prm.get("Velocity transfer") == "APIC");
+    end_time          = prm.get_double("End time");
+    max_steps         = prm.get_integer("Maximum number of steps");
+    courant           = prm.get_double("Courant number");
+    fixed_dt          = prm.get_double("Fixed time step");
+    use_musl          = (prm.get("Update scheme") == "MUSL");
+    use_apic          = (prm.get("Velocity transfer") != "FLIP");
+    apic_affine_remap = (prm.get("Velocity transfer") == "APIC affine remap");
+    AssertThrow(use_musl || !apic_affine_remap,
+                ExcMessage("Simulation/Velocity transfer = APIC affine remap "
+                           "changes the remap of Update scheme = MUSL, which "
+                           "USL does not have: use MUSL, or APIC with USL."));
     stress_integration = (prm.get("Stress integration") == "nodal projection")
                            ? Stages::StressIntegration::nodal_projection
                            : Stages::StressIntegration::points;

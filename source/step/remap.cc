@@ -1,6 +1,9 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace fsgmpm
 {
   namespace Stages
@@ -11,23 +14,52 @@ namespace fsgmpm
           const ParticleStore<dim>    &particles,
           const NodalConstraints<dim> &constraints,
           NodalFields<dim>            &nodes,
-          const Membrane<dim>         *membrane)
+          const Membrane<dim>         *membrane,
+          const bool                   affine)
     {
+      // APIC's affine term in Eq. (20), sum_p N_i m_p (v_p + C_p (x_i -
+      // x_p)) with v_p and C_p the grid-updated velocity and gradient, is
+      // m_i v_i on linear simplices: the grid-updated velocity is kept.
+      // Blended to the mass average at nodes whose points fill less than a
+      // quarter of their volume (weight fill / (1/4)), where the mass
+      // average suppresses the small-mass instability (a full affine remap,
+      // i.e. USL, was unstable in free fall: doc/accuracy_vs_cost.md).
+      thread_local std::vector<Tensor<1, dim>> updated_velocity;
+      thread_local std::vector<double>         filled_volume;
+      if (affine)
+        {
+          updated_velocity.resize(grid.n_nodes());
+          filled_volume.resize(grid.n_nodes());
+          for (const unsigned int i : nodes.active_nodes)
+            {
+              updated_velocity[i] = nodes.velocity[i];
+              filled_volume[i]    = 0;
+            }
+        }
       for (const unsigned int i : nodes.active_nodes)
         nodes.momentum[i] = Tensor<1, dim>();
 
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         Tensor<1, dim> mv[dim + 1];
+        double         volume[dim + 1] = {};
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
           {
             const auto lambda = grid.barycentric(c, particles.position[p]);
             for (unsigned int k = 0; k < dim + 1; ++k)
-              mv[k] += (lambda[k] * particles.mass[p]) * particles.velocity[p];
+              {
+                mv[k]
+                  += (lambda[k] * particles.mass[p]) * particles.velocity[p];
+                volume[k] += lambda[k] * particles.volume[p];
+              }
           }
         for (unsigned int k = 0; k < dim + 1; ++k)
-          nodes.momentum[grid.cell_nodes[c][k]] += mv[k];
+          {
+            nodes.momentum[grid.cell_nodes[c][k]] += mv[k];
+            if (affine)
+              filled_volume[grid.cell_nodes[c][k]] += volume[k];
+          }
       });
 
       if (membrane != nullptr)
@@ -39,6 +71,13 @@ namespace fsgmpm
         if (nodes.mass[i] > 0)
           {
             nodes.velocity[i] = nodes.momentum[i] / nodes.mass[i];
+            if (affine)
+              {
+                const double weight
+                  = std::min(1., 4. * filled_volume[i] / grid.node_volume[i]);
+                nodes.velocity[i] = weight * updated_velocity[i]
+                                    + (1 - weight) * nodes.velocity[i];
+              }
             constraints.apply_kinematic(i, nodes.velocity[i]);
           }
     }
@@ -48,12 +87,14 @@ namespace fsgmpm
              const ParticleStore<2> &,
              const NodalConstraints<2> &,
              NodalFields<2> &,
-             const Membrane<2> *);
+             const Membrane<2> *,
+             bool);
     template void
     remap<3>(const BackgroundGrid<3> &,
              const ParticleStore<3> &,
              const NodalConstraints<3> &,
              NodalFields<3> &,
-             const Membrane<3> *);
+             const Membrane<3> *,
+             bool);
   } // namespace Stages
 } // namespace fsgmpm

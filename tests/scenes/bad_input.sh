@@ -52,6 +52,7 @@ expect_error "unknown material" "Material model" --set "Bodies/Body 0/Material m
 expect_error "NMD with the nodal stress projection" "Volumetric smoothing = NMD\+ANP cannot be combined" --set "Simulation/Stress integration=nodal projection" --set "Bodies/Body 0/Volumetric smoothing=NMD+ANP"
 expect_error "3D slip on a Gmsh membrane" "slip needs a 2D membrane or, in 3D, an extruded one" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh"
 expect_error "unknown velocity transfer" "Velocity transfer" --set "Simulation/Velocity transfer=PIC"
+expect_error "affine remap with USL" "APIC affine remap.*USL" --set "Simulation/Velocity transfer=APIC affine remap" --set "Simulation/Update scheme=USL"
 expect_error "body outside the mesh" "Body 0.*outside the background mesh" --set "Bodies/Body 0/Box upper corner=1.5, 0.4"
 expect_error "missing mesh file" "no_such_mesh.msh" --set "Grid/Type=gmsh" --set "Grid/Mesh file=no_such_mesh.msh"
 expect_error "missing prm file" "no_such_file.prm" no_such_file.prm

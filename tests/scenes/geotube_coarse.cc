@@ -31,6 +31,7 @@
 // Eq. (30) at 1e-3 within 30 s of relaxation.
 
 #include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
@@ -107,6 +108,9 @@ namespace
   struct Tolerances
   {
     double hw, hw_nominal, tension, tension_nominal, pressure;
+    /// Bound on max/mean tension - 1: 1e-2 guards the slip projection
+    /// (uniform by construction); no-slip leaves a spread.
+    double tension_spread = 1e-2;
   };
 
   template <int dim>
@@ -183,8 +187,8 @@ namespace
     EXPECT_NEAR(m.at("mean_tension") / nominal.tension,
                 1.,
                 tol.tension_nominal);
-    // Uniform by construction of the slip projection: a guard only.
-    EXPECT_LT(m.at("max_tension") / m.at("mean_tension") - 1, 1e-2);
+    EXPECT_LT(m.at("max_tension") / m.at("mean_tension") - 1,
+              tol.tension_spread);
     EXPECT_EQ(sim.get_monitors().lost_particles, 0u);
     EXPECT_LE(m.at("particles_outside"), 0.005 * sim.get_particles().size());
     // The linear fit of the pressure (16 points per cell; with 4 the bottom
@@ -210,6 +214,33 @@ TEST(GeotubeCoarse, Slab3DMatchesAnalytic)
                           8.0,
                           "3D slab 16 cm",
                           {0.012, 0.015, 0.03, 0.03, 0.04});
+}
+
+// The paper's coupling, no-slip (the membrane nodes move with the grid
+// velocity only), with the setting measured to work for it
+// (doc/accuracy_vs_cost.md section 1): membrane elements of 0.9 cells (with
+// 0.4 cells the cables inside one cell form a zigzag of taut and slack
+// cables that the grid cannot see) and the nodal stress projection (without
+// it the P1 fill locks volumetrically and holds the initial ellipse; NMD
+// unlocks it but drains the area). The relaxation takes about 25 s (3 s with
+// slip); averaged over 40-50 s. Measured: H/W +0.0009 (own area and length)
+// and -0.0016 (nominal), T +0.7% and -0.6%, max/mean tension - 1 = 1.14 (a
+// local zigzag at one edge of the ground contact; elsewhere uniform to
+// 1 kN/m), p_top +0.8% and p_bottom +0.0% of p_bottom. Asserted: H/W within
+// 0.003 and 0.005, T within 2% and 2%, pressures within 3%, max/mean - 1
+// below 1.6.
+TEST(GeotubeCoarseValidation, NoSlipMatchesAnalytic)
+{
+  auto prm = coarse_parameters(50.0);
+  set_parameter(*prm, "Membrane/Tangential coupling", "no-slip");
+  set_parameter(*prm, "Membrane/Element size", "0.144");
+  set_parameter(*prm, "Membrane/Split length", "1");
+  set_parameter(*prm, "Output/Directory", "output_geotube_no_slip");
+  set_parameter(*prm, "Simulation/Stress integration", "nodal projection");
+  check_coarse_geotube<2>(*prm,
+                          40.0,
+                          "no-slip 16 cm",
+                          {0.003, 0.005, 0.02, 0.02, 0.03, 1.6});
 }
 
 TEST(GeotubeCoarseValidation, ConvergesByEq30)

@@ -41,6 +41,9 @@ namespace fsgmpm
     double       fixed_dt;
     bool         use_musl;
     bool         use_apic;
+    /// Velocity transfer = APIC affine remap: Stages::remap keeps the
+    /// grid-updated velocity at filled nodes.
+    bool apic_affine_remap;
     /// Internal force of Eq. (3): at the points or from the nodal projection.
     Stages::StressIntegration stress_integration;
     /// FLIP-PIC blend: sub-cell noise decays over this time (s; 0: FLIP).

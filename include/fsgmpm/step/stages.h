@@ -139,14 +139,18 @@ namespace fsgmpm
     /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
     /// membrane-node) momenta, with the kinematic wall conditions
     /// (NodalConstraints::apply_kinematic: no penetration, no second
-    /// friction impulse); suppresses the small-mass-node instability.
+    /// friction impulse); suppresses the small-mass-node instability. With
+    /// @p affine (APIC affine remap) the remap carries APIC's affine term,
+    /// i.e. keeps the grid-updated velocity, at nodes whose points fill a
+    /// quarter of their volume or more, blended to the mass average below.
     template <int dim>
     void
     remap(const BackgroundGrid<dim>   &grid,
           const ParticleStore<dim>    &particles,
           const NodalConstraints<dim> &constraints,
           NodalFields<dim>            &nodes,
-          const Membrane<dim>         *membrane = nullptr);
+          const Membrane<dim>         *membrane = nullptr,
+          const bool                   affine   = false);
 
     /// Stage 5a: the velocity gradient of every occupied cell (constant on
     /// linear simplices), from the (remapped) nodal velocities.
