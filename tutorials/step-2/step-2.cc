@@ -483,5 +483,86 @@ main(int argc, char **argv)
 
 /* <h1>Results</h1>
  *
- * RESULTS
+ * `./step-2` (20 cells across the column, 6 400 points per column, about
+ * 90 s with other runs sharing the 2 cores) prints:
+ *
+ * @code
+ * Single point in simple shear (tau_y = 200 Pa, mu_p = 1 Pa s, G = 100000 Pa):
+ *   gamma_dot [1/s]   tau [Pa]   tau_y + mu_p gamma_dot
+ *               0.1      200.1                    200.1
+ *                 1        201                      201
+ *                10        210                      210
+ *               100        300                      300
+ *              1000       1200                     1200
+ * Largest relative difference from tau_y + mu_p gamma_dot: 1.55e-15
+ *
+ * Water column and mud column, 20 cells across, 6400 points each.
+ *   t [s]   water front [m]   mud front [m]   mud depth at the wall [m]
+ *   0.000             0.114           0.114                 0.228
+ *   0.100             0.213           0.163                 0.192
+ *   0.200             0.402           0.281                 0.131
+ *   0.300             0.641           0.403                 0.102
+ *   0.400             0.684           0.508                 0.094
+ *   0.500             0.684           0.571                 0.092
+ *   0.600             0.684           0.594                 0.092
+ *   0.700             0.684           0.594                 0.092
+ *   0.800             0.684           0.594                 0.092
+ *   0.900             0.684           0.594                 0.092
+ *   1.000             0.684           0.594                 0.092
+ * Steps: water 10445, mud 20703
+ * Mud deposit:   x [m]   depth [m]   steepest admissible [m]
+ *              0.025       0.093                     0.120
+ *              0.075       0.082                     0.115
+ *              0.125       0.070                     0.109
+ *              0.175       0.062                     0.103
+ *              0.225       0.055                     0.097
+ *              0.275       0.051                     0.090
+ *              0.325       0.047                     0.083
+ *              0.375       0.047                     0.075
+ *              0.425       0.047                     0.066
+ *              0.475       0.045                     0.055
+ *              0.525       0.043                     0.042
+ *              0.575       0.037                     0.022
+ * Mud deposit: run-out 0.5936 m (smallest admissible 0.3907 m); depth at
+ * the wall 0.0923 m (steepest admissible 0.1230 m)
+ * @endcode
+ *
+ * (the last line is one line in the output). What it shows:
+ *
+ * - The single point gives the Bingham law to round-off at every rate,
+ *   from just above the yield stress (200.1 Pa at 0.1/s) to five times it.
+ * - The water reaches the far wall, 0.684 m, at about 0.4 s; the mud,
+ *   1.6 times as heavy, starts almost as fast (its yield stress is 6% of
+ *   the column's basal pressure rho g 2a = 3.6 kPa), slows down as it
+ *   thins, and stops at 0.594 m by 0.6 s. From then on nothing moves: the
+ *   elastic mud is at rest, not creeping as a regularised viscosity would.
+ * - The deposit is a wedge 0.092 m deep at the wall. Up to 0.5 m it lies
+ *   well inside the steepest profile its yield stress admits on a no-slip
+ *   floor: inertia carried the mud 50% past the smallest admissible
+ *   run-out, 0.391 m. The last 0.1 m stands above the shallow-layer
+ *   profile, which goes to zero at the front; the deposit ends instead in
+ *   a step about 0.04 m high. A shallow-layer theory does not hold at a
+ *   front, but plasticity does: a vertical face of a material of shear
+ *   strength tau_y stands up to about 3.8 tau_y/(rho g) = 0.049 m (the
+ *   critical height of a vertical cut in clay).
+ * - `./step-2 10` (what ctest runs, 8 s): run-out 0.520 m, depth at the
+ *   wall 0.097 m. The run-out moves by 14% from 10 to 20 cells: the no-slip
+ *   floor's shear layer is a cell thick on either mesh, so the drag of
+ *   the floor depends on the cell size (the same is measured for water on
+ *   a no-slip floor in doc/accuracy_vs_cost.md, section 2). The depth at
+ *   the wall, set by the yield stress, moves by 5%.
+ *
+ * <h3>Possibilities for extensions</h3>
+ *
+ * - Put the mud on the frictionless floor of the water (`2: roller` in
+ *   describe_scene()): a plug that slides without shearing does no work
+ *   against the yield stress, so only the spreading of the layer brakes
+ *   it (a layer on a frictionless floor stands if it is at most
+ *   4 tau_y/(rho g) = 0.051 m deep). Where does it stop? (With FLIP
+ *   instead of APIC it reached the far wall and went unstable at 0.85 s.)
+ * - Refine (`./step-2 40`) and follow the run-out: does it converge?
+ * - Replace the elastic part by a regularised viscosity
+ *   eta = min(eta_max, mu_p + tau_y/gamma_dot), and measure the price in
+ *   time steps (the viscous limit of the time step, dt ~ rho h^2 /
+ *   eta_max) and in creep of the deposit.
  */
