@@ -113,6 +113,13 @@ def granular_settings():
         add(f"cells{n}", Grid__Cell_size=h)
         add(f"cells{n}_projection", Grid__Cell_size=h,
             Simulation__Stress_integration="nodal projection")
+    # APIC with its affine term in the remap (converges in h and dt).
+    for n, h in cells.items():
+        add(f"cells{n}_affine_remap", Grid__Cell_size=h,
+            Simulation__Velocity_transfer="APIC affine remap")
+    for c in ("0.1", "1"):
+        add(f"courant{c}_affine_remap", Simulation__Courant_number=c,
+            Simulation__Velocity_transfer="APIC affine remap")
     # FLIP (known to run out 50-90% too far, doc/soil_validation.md).
     add("flip", Simulation__Velocity_transfer="FLIP")
     for ppc in ("1", "16"):
