@@ -41,24 +41,21 @@ namespace fsgmpm
 
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         Tensor<1, dim> mv[dim + 1];
-        double         volume[dim + 1] = {};
         for (unsigned int p = particles.cell_start[c];
              p < particles.cell_start[c + 1];
              ++p)
           {
             const auto lambda = grid.barycentric(c, particles.position[p]);
             for (unsigned int k = 0; k < dim + 1; ++k)
-              {
-                mv[k]
-                  += (lambda[k] * particles.mass[p]) * particles.velocity[p];
-                volume[k] += lambda[k] * particles.volume[p];
-              }
+              mv[k] += (lambda[k] * particles.mass[p]) * particles.velocity[p];
           }
         for (unsigned int k = 0; k < dim + 1; ++k)
+          nodes.momentum[grid.cell_nodes[c][k]] += mv[k];
+        if (affine)
           {
-            nodes.momentum[grid.cell_nodes[c][k]] += mv[k];
-            if (affine)
-              filled_volume[grid.cell_nodes[c][k]] += volume[k];
+            const auto share = CellLoops::volume_shares(grid, particles, c);
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              filled_volume[grid.cell_nodes[c][k]] += share[k];
           }
       });
 
