@@ -2,13 +2,16 @@
 
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/io/grid_output.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
+#include <fsgmpm/io/state_checkpoint.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/simulator.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
@@ -73,6 +76,7 @@ namespace fsgmpm
   Simulator<dim>::Simulator(ParameterHandler &prm)
     : params(prm)
     , stage_seconds(n_stages, 0.)
+    , parameter_listing(parameter_values(prm))
   {
     if (params.n_threads > 0)
       MultithreadInfo::set_thread_limit(params.n_threads);
@@ -795,12 +799,16 @@ namespace fsgmpm
     const auto  start = Clock::now();
     const auto &dir   = params.output_directory;
     fs::create_directories(dir);
-    for (const char *stale : {"monitors.csv", "summary.json"})
-      fs::remove(fs::path(dir) / stale);
-    for (const auto &entry : fs::directory_iterator(dir))
-      if (entry.path().extension() == ".vtu"
-          || entry.path().extension() == ".pvd")
-        fs::remove(entry.path());
+    fs::remove(fs::path(dir) / "summary.json");
+    if (!resumed)
+      {
+        fs::remove(fs::path(dir) / "monitors.csv");
+        fs::remove_all(fs::path(dir) / "checkpoints");
+        for (const auto &entry : fs::directory_iterator(dir))
+          if (entry.path().extension() == ".vtu"
+              || entry.path().extension() == ".pvd")
+            fs::remove(entry.path());
+      }
 
     particle_series = std::make_unique<PvdSeries>(dir, "particles");
     grid_series     = std::make_unique<PvdSeries>(dir, "grid");
@@ -828,7 +836,10 @@ namespace fsgmpm
     for (const auto &name : scene_monitors->names())
       columns.push_back(name);
     monitor_file
-      = std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
+      = resumed ? std::make_unique<MonitorFile>(dir + "/monitors.csv",
+                                                columns,
+                                                resume_monitor_bytes) :
+                  std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
     auto write_monitor_row = [&] {
       std::vector<double> row = {time,
                                  double(step),
@@ -852,10 +863,30 @@ namespace fsgmpm
     const bool any_output
       = (params.write_particles || params.write_grid || membrane)
         && (interval_output || params.output_every_steps > 0);
-    write_monitor_row();
-    if (any_output)
-      write_output();
-    next_output_time = params.output_interval;
+    if (resumed)
+      {
+        // The series as they were at the checkpoint; files written after
+        // it are written again under the same names.
+        PvdSeries *series[3] = {particle_series.get(),
+                                grid_series.get(),
+                                membrane_series.get()};
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            for (const double t : resume_series_times[k])
+              series[k]->next_file(t);
+            if (!resume_series_times[k].empty())
+              series[k]->write_pvd();
+          }
+      }
+    else
+      {
+        write_monitor_row();
+        if (any_output)
+          write_output();
+        next_output_time     = params.output_interval;
+        next_checkpoint_time = params.checkpoint_interval;
+      }
+    const double start_time = time;
 
     if (!params.quiet)
       std::cout << "fsgmpm: " << dim << "D, " << particles.size()
@@ -863,9 +894,8 @@ namespace fsgmpm
                 << MultithreadInfo::n_threads() << " threads, "
                 << (params.use_musl ? "MUSL" : "USL") << std::endl;
 
-    auto         last_progress    = Clock::now();
-    unsigned int last_output_step = 0;
-    bool         running          = true;
+    auto last_progress = Clock::now();
+    bool running       = true;
     while (running)
       {
         running = advance();
@@ -893,6 +923,16 @@ namespace fsgmpm
                   * (std::floor(time * (1 + 1e-12) / params.output_interval)
                      + 1);
           }
+        if (params.checkpoint_interval > 0 && running
+            && time >= next_checkpoint_time * (1 - 1e-12))
+          {
+            write_checkpoint(
+              std::chrono::duration<double>(Clock::now() - start).count());
+            next_checkpoint_time
+              = params.checkpoint_interval
+                * (std::floor(time * (1 + 1e-12) / params.checkpoint_interval)
+                   + 1);
+          }
         if (!params.quiet
             && std::chrono::duration<double>(Clock::now() - last_progress)
                    .count()
@@ -901,8 +941,8 @@ namespace fsgmpm
             last_progress = Clock::now();
             const double elapsed
               = std::chrono::duration<double>(last_progress - start).count();
-            const double eta
-              = elapsed * (params.end_time - time) / std::max(time, 1e-300);
+            const double eta = elapsed * (params.end_time - time)
+                               / std::max(time - start_time, 1e-300);
             std::cout << "  t = " << std::setprecision(4) << time << " s  step "
                       << step << "  dt = " << dt << " s  ETA "
                       << std::setprecision(3) << eta << " s" << std::endl;
@@ -910,7 +950,13 @@ namespace fsgmpm
       }
 
     const double wall
-      = std::chrono::duration<double>(Clock::now() - start).count();
+      = std::chrono::duration<double>(Clock::now() - start).count()
+        + previous_wall_seconds;
+    // The final state too, so that a finished run can be continued to a
+    // later End time.
+    if (params.checkpoint_interval > 0 && termination != "unstable"
+        && termination != "error")
+      write_checkpoint(wall - previous_wall_seconds);
     monitor_file.reset();
     if (membrane)
       write_membrane_shape_csv(*membrane, dir + "/membrane_shape.csv");

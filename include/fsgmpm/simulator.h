@@ -25,6 +25,8 @@
 namespace fsgmpm
 {
   class MonitorFile;
+  class CheckpointWriter;
+  class CheckpointReader;
 
   /// Global quantities monitored every step (common columns of SPEC 6).
   struct Monitors
@@ -64,6 +66,19 @@ namespace fsgmpm
     /// output. Returns the termination reason.
     std::string
     run();
+
+    /**
+     * Continue the run whose output is in @p directory from the newest of
+     * its checkpoints (@p directory/checkpoints, Output/Checkpoint
+     * interval) that reads back intact; a damaged one is reported and the
+     * one before it is used. Call before run(), which then appends to the
+     * run's monitors.csv (cut back to the checkpoint's step) and output
+     * series in @p directory. The scene's parameters must be those of the
+     * checkpointed run, except those under Output, Simulation/End time, Maximum
+     * number of steps, Termination and Number of threads.
+     */
+    void
+    restart(const std::string &directory);
 
     /// Advance one time step without any file output. Returns false and
     /// sets the termination reason when the run must stop.
@@ -200,6 +215,14 @@ namespace fsgmpm
     write_output();
     void
     write_summary(const double wall_seconds) const;
+    /// Write the whole state to Output/Directory/checkpoints (keeps two).
+    void
+    write_checkpoint(const double wall_seconds);
+    /// Refuse a checkpoint written with other (physical) parameters.
+    void
+    check_checkpoint_parameters(const CheckpointReader &in) const;
+    void
+    load_checkpoint(const CheckpointReader &in);
     Tensor<1, dim>
     current_gravity() const;
 
@@ -245,7 +268,18 @@ namespace fsgmpm
     ParticleOutput<dim>          particle_output;
     std::unique_ptr<PvdSeries>   particle_series, grid_series, membrane_series;
     double                       next_output_time = 0;
+    unsigned int                 last_output_step = 0;
     unsigned long long           particle_updates = 0;
+
+    /// Every parameter ("Section/Name", value), for the checkpoint.
+    std::vector<std::pair<std::string, std::string>> parameter_listing;
+    double next_checkpoint_time = 0;
+    /// Set by restart(): the state came from a checkpoint, with these
+    /// bytes of monitors.csv, wall seconds and output series before it.
+    bool                               resumed               = false;
+    double                             resume_monitor_bytes  = 0;
+    double                             previous_wall_seconds = 0;
+    std::array<std::vector<double>, 3> resume_series_times;
   };
 } // namespace fsgmpm
 

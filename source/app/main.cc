@@ -1,7 +1,7 @@
 /**
  * fsgmpm: coupled FEM-MPM solver for fluid-soil-geomembrane interaction.
  *
- *   fsgmpm [scene.prm] [--set "Section/Sub/Name=value"]...
+ *   fsgmpm [scene.prm] [--set "Section/Sub/Name=value"]... [--restart DIR]
  *   fsgmpm --help | --print-parameters [scene.prm] | --version
  *
  * The whole command line and the scene are validated (and the grid and
@@ -32,7 +32,8 @@ namespace
   using namespace dealii;
 
   const char *usage
-    = "Usage: fsgmpm [scene.prm] [--set \"Section/Sub/Name=value\"]...\n"
+    = "Usage: fsgmpm [scene.prm] [--set \"Section/Sub/Name=value\"]... "
+      "[--restart DIR]\n"
       "       fsgmpm --print-parameters [scene.prm] [--set ...]\n"
       "       fsgmpm --help | --version\n"
       "\n"
@@ -44,6 +45,10 @@ namespace
       "  --set \"Path/Name=value\"  override one parameter after reading the\n"
       "                           file, e.g. --set \"Simulation/End "
       "time=0.1\"\n"
+      "  --restart DIR            continue the run whose output is in DIR\n"
+      "                           from its newest intact checkpoint\n"
+      "                           (Output/Checkpoint interval > 0), with the\n"
+      "                           same scene; it writes on into DIR\n"
       "  --print-parameters       print every parameter with its current "
       "value,\n"
       "                           default, allowed range and documentation\n"
@@ -66,24 +71,6 @@ namespace
                           Utilities::trim(arg.substr(eq + 1)));
   }
 
-  /// Undo ParameterHandler's name mangling in its JSON output ("_20" for a
-  /// space, "_27" for an apostrophe, ...).
-  std::string
-  demangle(const std::string &s)
-  {
-    std::string out;
-    for (unsigned int i = 0; i < s.size(); ++i)
-      if (s[i] == '_' && i + 2 < s.size() + 0 && std::isxdigit(s[i + 1])
-          && std::isxdigit(s[i + 2]))
-        {
-          out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
-          i += 2;
-        }
-      else
-        out += s[i];
-    return out;
-  }
-
   /// Print every parameter as a valid prm file: documentation, default and
   /// allowed values as comments above each "set" line with the current value.
   void
@@ -101,7 +88,7 @@ namespace
           const std::string indent(2 * depth, ' ');
           for (const auto &[name, child] : node)
             {
-              const std::string key = demangle(name);
+              const std::string key = fsgmpm::demangle_parameter_name(name);
               if (child.count("value") == 1)
                 {
                   out << indent << "# "
@@ -126,10 +113,12 @@ namespace
 
   template <int dim>
   int
-  run_scene(ParameterHandler &prm)
+  run_scene(ParameterHandler &prm, const std::string &restart_directory)
   {
     fsgmpm::Simulator<dim> simulator(prm);
-    const std::string      termination = simulator.run();
+    if (!restart_directory.empty())
+      simulator.restart(restart_directory);
+    const std::string termination = simulator.run();
     return termination == "unstable" ? 3 : (termination == "error" ? 1 : 0);
   }
 } // namespace
@@ -143,6 +132,7 @@ main(int argc, char **argv)
     {
       std::string              prm_file;
       std::vector<std::string> overrides;
+      std::string              restart_directory;
       bool                     print_parameters = false;
       for (int i = 1; i < argc; ++i)
         {
@@ -165,6 +155,16 @@ main(int argc, char **argv)
                           ExcMessage("--set needs an argument "
                                      "\"Section/Sub/Name=value\"."));
               overrides.push_back(argv[++i]);
+            }
+          else if (arg == "--restart")
+            {
+              AssertThrow(i + 1 < argc && argv[i + 1][0] != '-',
+                          ExcMessage("--restart needs the output directory "
+                                     "of the run to continue."));
+              restart_directory = argv[++i];
+              AssertThrow(std::filesystem::is_directory(restart_directory),
+                          ExcMessage("--restart " + restart_directory
+                                     + ": no such directory."));
             }
           else if (arg.rfind("--set=", 0) == 0)
             overrides.push_back(arg.substr(6));
@@ -205,7 +205,8 @@ main(int argc, char **argv)
         }
 
       const unsigned int dim = fsgmpm::get_dimension(prm);
-      return dim == 2 ? run_scene<2>(prm) : run_scene<3>(prm);
+      return dim == 2 ? run_scene<2>(prm, restart_directory) :
+                        run_scene<3>(prm, restart_directory);
     }
   catch (dealii::ExceptionBase &e)
     {

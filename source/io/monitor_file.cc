@@ -4,6 +4,8 @@
 #include <fsgmpm/io/monitor_file.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 namespace fsgmpm
 {
@@ -22,6 +24,49 @@ namespace fsgmpm
     std::fputs(header.c_str(), file);
     std::fflush(file);
   }
+
+  MonitorFile::MonitorFile(const std::string              &file_name,
+                           const std::vector<std::string> &columns,
+                           const unsigned long             bytes)
+    : file(nullptr)
+    , n_columns(columns.size())
+  {
+    namespace fs = std::filesystem;
+    std::string header, expected;
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      expected += (i ? "," : "") + columns[i];
+    {
+      std::ifstream in(file_name);
+      std::getline(in, header);
+    }
+    AssertThrow(header == expected,
+                dealii::ExcMessage(
+                  "Cannot continue <" + file_name
+                  + ">: it is missing or its columns differ from this "
+                    "scene's (the restart needs the run's own monitors.csv)."));
+    AssertThrow(fs::file_size(file_name) >= bytes,
+                dealii::ExcMessage("Cannot continue <" + file_name
+                                   + ">: it is shorter than at the checkpoint ("
+                                   + std::to_string(fs::file_size(file_name))
+                                   + " bytes, the checkpoint needs "
+                                   + std::to_string(bytes) + ")."));
+    // The rows written after the checkpoint are written again.
+    fs::resize_file(file_name, bytes);
+    file = std::fopen(file_name.c_str(), "a");
+    AssertThrow(file != nullptr,
+                dealii::ExcMessage("Cannot open <" + file_name
+                                   + "> for writing."));
+  }
+
+
+
+  unsigned long
+  MonitorFile::size() const
+  {
+    return static_cast<unsigned long>(std::ftell(file));
+  }
+
+
 
   MonitorFile::~MonitorFile()
   {

@@ -3,6 +3,11 @@
 
 #include <fsgmpm/scene/parameter_path.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cctype>
+#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -49,5 +54,53 @@ namespace fsgmpm
                                + path + ">: " + Utilities::trim(info.str())));
       }
     leave();
+  }
+
+
+
+  std::string
+  demangle_parameter_name(const std::string &s)
+  {
+    std::string out;
+    for (unsigned int i = 0; i < s.size(); ++i)
+      if (s[i] == '_' && i + 2 < s.size() + 0 && std::isxdigit(s[i + 1])
+          && std::isxdigit(s[i + 2]))
+        {
+          out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        }
+      else
+        out += s[i];
+    return out;
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
+  parameter_values(const ParameterHandler &prm)
+  {
+    std::stringstream json;
+    prm.print_parameters(json,
+                         ParameterHandler::OutputStyle(
+                           ParameterHandler::JSON
+                           | ParameterHandler::KeepDeclarationOrder));
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    std::vector<std::pair<std::string, std::string>> values;
+    std::function<void(const boost::property_tree::ptree &,
+                       const std::string &)>
+      walk = [&](const boost::property_tree::ptree &node,
+                 const std::string                 &prefix) {
+        for (const auto &[name, child] : node)
+          {
+            const std::string path = prefix + demangle_parameter_name(name);
+            if (child.count("value") == 1)
+              values.emplace_back(path, child.get<std::string>("value"));
+            else
+              walk(child, path + "/");
+          }
+      };
+    walk(tree, "");
+    return values;
   }
 } // namespace fsgmpm

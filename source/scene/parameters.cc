@@ -344,6 +344,15 @@ namespace fsgmpm
                         "false",
                         Patterns::Bool(),
                         "Suppress the progress line.");
+      prm.declare_entry(
+        "Checkpoint interval",
+        "0",
+        Patterns::Double(0),
+        "Write the whole state to DIRECTORY/checkpoints/ (HDF5) every this "
+        "much simulated time, and at the end of the run (s; 0: never). The "
+        "last two are kept; fsgmpm scene.prm --restart DIRECTORY continues "
+        "from the newest one that reads back intact, exactly as the run "
+        "would have gone on.");
     }
     prm.leave_subsection();
 
@@ -530,6 +539,7 @@ namespace fsgmpm
     write_grid          = prm.get_bool("Write grid");
     monitor_every_steps = prm.get_integer("Monitor every n steps");
     quiet               = prm.get_bool("Quiet");
+    checkpoint_interval = prm.get_double("Checkpoint interval");
     prm.leave_subsection();
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Output/Directory must not be empty."));

@@ -24,8 +24,13 @@ namespace fsgmpm
       // quarter of their volume (weight fill / (1/4)), where the mass
       // average suppresses the small-mass instability (a full affine remap,
       // i.e. USL, was unstable in free fall: doc/accuracy_vs_cost.md).
+      // Scratch kept between steps. The scatter below runs on worker
+      // threads, where a thread_local names another thread's (empty)
+      // vector: it writes through this reference.
       thread_local std::vector<Tensor<1, dim>> updated_velocity;
-      thread_local std::vector<double>         filled_volume;
+      thread_local std::vector<double>         filled_volume_scratch;
+      std::vector<double>                     &filled_volume =
+        filled_volume_scratch;
       if (affine)
         {
           updated_velocity.resize(grid.n_nodes());

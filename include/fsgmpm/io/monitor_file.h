@@ -20,7 +20,19 @@ namespace fsgmpm
   public:
     MonitorFile(const std::string              &file_name,
                 const std::vector<std::string> &columns);
+    /**
+     * Continue an existing monitors.csv (a restart): it must have the same
+     * header; it is cut back to its first @p bytes (the rows up to the
+     * checkpoint) and appended to.
+     */
+    MonitorFile(const std::string              &file_name,
+                const std::vector<std::string> &columns,
+                const unsigned long             bytes);
     ~MonitorFile();
+
+    /// Bytes in the file so far (everything written is flushed).
+    unsigned long
+    size() const;
     MonitorFile(const MonitorFile &) = delete;
     MonitorFile &
     operator=(const MonitorFile &)

@@ -66,6 +66,17 @@ namespace fsgmpm
     void
     write_pvd() const;
 
+    /// The times of the files written so far (a restart re-creates the
+    /// series by calling next_file() with them).
+    std::vector<double>
+    times() const
+    {
+      std::vector<double> t;
+      for (const auto &r : records)
+        t.push_back(r.first);
+      return t;
+    }
+
   private:
     std::string                                 directory, base_name;
     std::vector<std::pair<double, std::string>> records;

@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fsgmpm
 {
@@ -17,6 +19,18 @@ namespace fsgmpm
   set_parameter(dealii::ParameterHandler &prm,
                 const std::string        &path,
                 const std::string        &value);
+
+  /// Undo ParameterHandler's name mangling in its JSON output ("_20" for a
+  /// space, "_27" for an apostrophe, ...).
+  std::string
+  demangle_parameter_name(const std::string &name);
+
+  /**
+   * Every parameter of @p prm with its current value, as ("Section/Sub/Name",
+   * value) in declaration order (the paths --set takes).
+   */
+  std::vector<std::pair<std::string, std::string>>
+  parameter_values(const dealii::ParameterHandler &prm);
 } // namespace fsgmpm
 
 #endif

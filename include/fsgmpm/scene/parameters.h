@@ -84,6 +84,8 @@ namespace fsgmpm
     // Output
     std::string  output_directory;
     double       output_interval;
+    /// Simulated time between checkpoints (0: none).
+    double       checkpoint_interval;
     unsigned int output_every_steps;
     bool         write_particles;
     bool         write_grid;

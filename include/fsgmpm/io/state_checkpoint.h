@@ -1,0 +1,40 @@
+#ifndef fsgmpm_io_state_checkpoint_h
+#define fsgmpm_io_state_checkpoint_h
+
+#include <fsgmpm/io/checkpoint_file.h>
+#include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/particles/particle_store.h>
+
+namespace fsgmpm
+{
+  /**
+   * The material points' and the membrane's whole state in a checkpoint
+   * (entries "particles/..." and "membrane/..."). Every array that a step
+   * reads before it rewrites it is stored, bit for bit.
+   */
+  namespace StateCheckpoint
+  {
+    template <int dim>
+    void
+    save(CheckpointWriter &out, const ParticleStore<dim> &particles);
+
+    /// Replaces the points; rebuilds the per-cell index (@p n_cells cells).
+    template <int dim>
+    void
+    load(const CheckpointReader &in,
+         ParticleStore<dim>     &particles,
+         const unsigned int      n_cells);
+
+    template <int dim>
+    void
+    save(CheckpointWriter &out, const Membrane<dim> &membrane);
+
+    /// Replaces the membrane's nodes, elements and rings (splitting may
+    /// have changed them since the scene was built).
+    template <int dim>
+    void
+    load(const CheckpointReader &in, Membrane<dim> &membrane);
+  } // namespace StateCheckpoint
+} // namespace fsgmpm
+
+#endif

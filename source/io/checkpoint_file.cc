@@ -1,0 +1,300 @@
+#include <deal.II/base/hdf5.h>
+
+#include <fsgmpm/io/checkpoint_file.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fsgmpm
+{
+  namespace
+  {
+    using namespace dealii;
+
+    /// FNV-1a (64 bit) over a byte range, continued from @p hash.
+    std::uint64_t
+    fnv1a(const void *data, const std::size_t n, std::uint64_t hash)
+    {
+      const auto *bytes = static_cast<const unsigned char *>(data);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          hash ^= bytes[i];
+          hash *= 1099511628211ull;
+        }
+      return hash;
+    }
+
+    constexpr std::uint64_t fnv_offset = 14695981039346656037ull;
+
+    /// FNV-1a of a whole file's bytes.
+    std::uint64_t
+    file_hash(const std::string &file_name)
+    {
+      std::ifstream     in(file_name, std::ios::binary);
+      std::vector<char> buffer(1 << 20);
+      std::uint64_t     hash = fnv_offset;
+      while (in)
+        {
+          in.read(buffer.data(), buffer.size());
+          hash = fnv1a(buffer.data(), in.gcount(), hash);
+        }
+      return hash;
+    }
+
+    std::string
+    hex(const std::uint64_t x)
+    {
+      char buffer[20];
+      std::snprintf(buffer, sizeof(buffer), "%016llx", (unsigned long long)x);
+      return buffer;
+    }
+
+    std::vector<unsigned int>
+    bytes_of(const std::string &text)
+    {
+      return std::vector<unsigned int>(text.begin(), text.end());
+    }
+
+    /// HDF5 reads '/' as a group path: the datasets have flat names.
+    std::string
+    dataset_name(std::string name)
+    {
+      for (char &c : name)
+        if (c == '/')
+          c = '.';
+      return name;
+    }
+
+    /// deal.II's HDF5 wrappers do not throw when HDF5 fails to create or
+    /// write a dataset; HDF5's error stack tells.
+    template <typename Container>
+    void
+    write_checked(HDF5::File        &file,
+                  const std::string &name,
+                  const Container   &data,
+                  const std::string &file_name)
+    {
+      file.write_dataset(dataset_name(name), data);
+      AssertThrow(H5Eget_num(H5E_DEFAULT) == 0,
+                  ExcMessage("Writing <" + name + "> to the checkpoint <"
+                             + file_name + "> failed (disk full?)."));
+    }
+  } // namespace
+
+
+
+  CheckpointWriter::CheckpointWriter(const std::string &stem)
+    : stem(stem)
+    , tmp_name(stem + ".h5.tmp")
+  {
+    std::filesystem::remove(tmp_name);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    try
+      {
+        file = std::make_unique<HDF5::File>(
+          tmp_name, HDF5::File::FileAccessMode::create);
+      }
+    catch (...)
+      {
+        AssertThrow(false,
+                    ExcMessage("Cannot create the checkpoint file <" + tmp_name
+                               + ">."));
+      }
+  }
+
+
+
+  CheckpointWriter::~CheckpointWriter()
+  {
+    // Not committed (an exception while writing): leave no partial file.
+    if (file)
+      {
+        file.reset();
+        std::error_code ignored;
+        std::filesystem::remove(tmp_name, ignored);
+      }
+  }
+
+
+
+  void
+  CheckpointWriter::put(const std::string         &name,
+                        const std::vector<double> &data)
+  {
+    entries += "d " + name + " " + std::to_string(data.size()) + "\n";
+    // HDF5 datasets cannot be empty: an empty array is only listed.
+    if (!data.empty())
+      write_checked(*file, name, data, tmp_name);
+  }
+
+
+
+  void
+  CheckpointWriter::put(const std::string               &name,
+                        const std::vector<unsigned int> &data)
+  {
+    entries += "u " + name + " " + std::to_string(data.size()) + "\n";
+    if (!data.empty())
+      write_checked(*file, name, data, tmp_name);
+  }
+
+
+
+  void
+  CheckpointWriter::put(const std::string &name, const std::string &text)
+  {
+    entries += "s " + name + " " + std::to_string(text.size()) + "\n";
+    if (!text.empty())
+      write_checked(*file, name, bytes_of(text), tmp_name);
+  }
+
+
+
+  std::string
+  CheckpointWriter::commit()
+  {
+    write_checked(*file, "checkpoint_entries", bytes_of(entries), tmp_name);
+    file.reset(); // H5Fclose: everything is in the file
+    // The hash of the file's bytes goes into its name, so that a reader
+    // checks the file before HDF5 parses it (deal.II's HDF5 wrappers do not
+    // survive a damaged file).
+    const std::string name = stem + "_" + hex(file_hash(tmp_name)) + ".h5";
+    std::filesystem::rename(tmp_name, name);
+    return name;
+  }
+
+
+
+  CheckpointReader::CheckpointReader(const std::string &file_name)
+    : file_name(file_name)
+  {
+    // The name ends in _HASH.h5, the hash of the file's bytes.
+    const auto underscore = file_name.rfind('_');
+    const auto dot        = file_name.rfind(".h5");
+    AssertThrow(underscore != std::string::npos && dot != std::string::npos
+                  && dot > underscore,
+                ExcMessage("<" + file_name
+                           + "> is not named as an fsgmpm checkpoint "
+                             "(checkpoint_STEP_HASH.h5)."));
+    const std::string named = file_name.substr(underscore + 1,
+                                               dot - underscore - 1);
+    const std::string found = hex(file_hash(file_name));
+    AssertThrow(named == found,
+                ExcMessage("Cannot read the checkpoint <" + file_name
+                           + ">: it is damaged (truncated or changed; the "
+                             "hash of its bytes is "
+                           + found + ", its name says " + named + ")."));
+
+    // HDF5 would print its error stack for an unreadable file; the message
+    // below says what matters.
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    try
+      {
+        HDF5::File file(file_name, HDF5::File::FileAccessMode::open);
+        const auto list_bytes = file.open_dataset("checkpoint_entries")
+                                  .read<std::vector<unsigned int>>();
+        std::istringstream list(
+          std::string(list_bytes.begin(), list_bytes.end()));
+        std::string line;
+        while (std::getline(list, line))
+          {
+            const auto  first = line.find(' '), last = line.rfind(' ');
+            const char  kind  = line[0];
+            const auto  name  = line.substr(first + 1, last - first - 1);
+            const auto  size  = std::stoul(line.substr(last + 1));
+            if (kind == 'd')
+              {
+                auto &v = double_data[name];
+                if (size > 0)
+                  v = file.open_dataset(dataset_name(name))
+                        .read<std::vector<double>>();
+                AssertThrow(v.size() == size, ExcInternalError());
+              }
+            else
+              {
+                std::vector<unsigned int> v;
+                if (size > 0)
+                  v = file.open_dataset(dataset_name(name))
+                        .read<std::vector<unsigned int>>();
+                AssertThrow(v.size() == size, ExcInternalError());
+                if (kind == 'u')
+                  uint_data[name] = std::move(v);
+                else
+                  text_data[name].assign(v.begin(), v.end());
+              }
+          }
+      }
+    catch (...)
+      {
+        AssertThrow(false,
+                    ExcMessage("Cannot read the checkpoint <" + file_name
+                               + ">: HDF5 cannot read it back."));
+      }
+  }
+
+
+
+  bool
+  CheckpointReader::has(const std::string &name) const
+  {
+    return double_data.count(name) + uint_data.count(name)
+             + text_data.count(name)
+           > 0;
+  }
+
+
+
+  namespace
+  {
+    template <typename Map>
+    const typename Map::mapped_type &
+    lookup(const Map &map, const std::string &name, const std::string &file)
+    {
+      const auto it = map.find(name);
+      AssertThrow(it != map.end(),
+                  ExcMessage("The checkpoint <" + file + "> has no entry <"
+                             + name
+                             + ">: it was written by another version of "
+                               "fsgmpm or for another scene."));
+      return it->second;
+    }
+  } // namespace
+
+
+
+  const std::vector<double> &
+  CheckpointReader::doubles(const std::string &name) const
+  {
+    return lookup(double_data, name, file_name);
+  }
+
+
+
+  const std::vector<unsigned int> &
+  CheckpointReader::uints(const std::string &name) const
+  {
+    return lookup(uint_data, name, file_name);
+  }
+
+
+
+  const std::string &
+  CheckpointReader::text(const std::string &name) const
+  {
+    return lookup(text_data, name, file_name);
+  }
+
+
+
+  double
+  CheckpointReader::scalar(const std::string &name) const
+  {
+    const auto &v = doubles(name);
+    AssertThrow(v.size() == 1,
+                ExcMessage("The checkpoint <" + file_name + ">: the entry <"
+                           + name + "> is not a single value."));
+    return v[0];
+  }
+} // namespace fsgmpm

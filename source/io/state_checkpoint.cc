@@ -1,0 +1,216 @@
+#include <fsgmpm/io/state_checkpoint.h>
+
+namespace fsgmpm
+{
+  namespace StateCheckpoint
+  {
+    template <int dim>
+    void
+    save(CheckpointWriter &out, const ParticleStore<dim> &p)
+    {
+      out.put_tensors("particles/position", p.position);
+      out.put_tensors("particles/velocity", p.velocity);
+      out.put("particles/has_affine_velocity",
+              double(p.has_affine_velocity()));
+      out.put_tensors("particles/affine_velocity", p.affine_velocity);
+      out.put_tensors("particles/stress", p.stress);
+      out.put("particles/mass", p.mass);
+      out.put("particles/volume", p.volume);
+      out.put("particles/reference_volume", p.reference_volume);
+      out.put("particles/cell", p.cell);
+      out.put_integers("particles/material_id", p.material_id);
+      out.put_integers("particles/body_id", p.body_id);
+      out.put_integers("particles/free_surface", p.free_surface);
+    }
+
+
+
+    template <int dim>
+    void
+    load(const CheckpointReader &in,
+         ParticleStore<dim>     &p,
+         const unsigned int      n_cells)
+    {
+      p.position = in.tensors<Point<dim>>("particles/position");
+      p.velocity = in.tensors<Tensor<1, dim>>("particles/velocity");
+      if (in.scalar("particles/has_affine_velocity") != 0)
+        p.enable_affine_velocity();
+      p.affine_velocity =
+        in.tensors<Tensor<2, dim>>("particles/affine_velocity");
+      p.stress           = in.tensors<SymmetricTensor<2, 3>>("particles/stress");
+      p.mass             = in.doubles("particles/mass");
+      p.volume           = in.doubles("particles/volume");
+      p.reference_volume = in.doubles("particles/reference_volume");
+      p.cell             = in.uints("particles/cell");
+      p.material_id = in.integers<std::uint16_t>("particles/material_id");
+      p.body_id     = in.integers<std::uint16_t>("particles/body_id");
+      p.free_surface = in.integers<std::uint8_t>("particles/free_surface");
+      const unsigned int n = p.position.size();
+      for (const std::size_t size : {p.velocity.size(),
+                                     p.stress.size(),
+                                     p.mass.size(),
+                                     p.volume.size(),
+                                     p.reference_volume.size(),
+                                     p.cell.size(),
+                                     p.material_id.size(),
+                                     p.body_id.size(),
+                                     p.free_surface.size()})
+        AssertThrow(size == n,
+                    ExcMessage("The checkpoint's point arrays differ in "
+                               "length: it is damaged."));
+      AssertThrow(p.affine_velocity.size()
+                    == (p.has_affine_velocity() ? n : 0),
+                  ExcMessage("The checkpoint's affine velocities do not "
+                             "match its points: it is damaged."));
+      for (const unsigned int c : p.cell)
+        AssertThrow(c < n_cells,
+                    ExcMessage("The checkpoint names cell " + std::to_string(c)
+                               + ", but the mesh has "
+                               + std::to_string(n_cells)
+                               + " cells: it was written for another mesh."));
+      // The points were stored sorted by cell (relocate sorts them after
+      // every step); the stable sort keeps their order and rebuilds the
+      // per-cell index.
+      p.sort_by_cell(n_cells);
+    }
+
+
+
+    template <int dim>
+    void
+    save(CheckpointWriter &out, const Membrane<dim> &m)
+    {
+      out.put_tensors("membrane/position", m.position);
+      out.put_tensors("membrane/velocity", m.velocity);
+      out.put("membrane/mass", m.mass);
+      out.put_tensors("membrane/force", m.force);
+      out.put("membrane/cell", m.cell);
+      out.put("membrane/tangential_slip", double(m.tangential_slip));
+      out.put_tensors("membrane/weights", m.weights);
+      std::vector<unsigned int> ring_sizes, ring_nodes;
+      std::vector<double>       ring_rest_length;
+      for (unsigned int r = 0; r < m.rings.size(); ++r)
+        {
+          ring_sizes.push_back(m.rings[r].size());
+          ring_nodes.insert(ring_nodes.end(),
+                            m.rings[r].begin(),
+                            m.rings[r].end());
+          ring_rest_length.insert(ring_rest_length.end(),
+                                  m.ring_rest_length[r].begin(),
+                                  m.ring_rest_length[r].end());
+        }
+      out.put("membrane/ring_sizes", ring_sizes);
+      out.put("membrane/ring_nodes", ring_nodes);
+      out.put("membrane/ring_rest_length", ring_rest_length);
+      std::vector<unsigned int> elements;
+      for (const auto &e : m.elements)
+        elements.insert(elements.end(), e.begin(), e.end());
+      out.put("membrane/elements", elements);
+      out.put("membrane/rest_size", m.rest_size);
+      std::vector<double> reference;
+      for (const auto &r : m.reference)
+        {
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int j = 0; j < 2; ++j)
+              reference.push_back(r.dm_inverse[i][j]);
+          reference.push_back(r.area);
+        }
+      out.put("membrane/reference", reference);
+      out.put("membrane/tension", m.tension);
+      out.put("membrane/minor_tension", m.minor_tension);
+    }
+
+
+
+    template <int dim>
+    void
+    load(const CheckpointReader &in, Membrane<dim> &m)
+    {
+      auto damaged = [](const std::string &what) {
+        return ExcMessage("The checkpoint's membrane is damaged: " + what
+                          + ".");
+      };
+      m.position        = in.tensors<Point<dim>>("membrane/position");
+      m.velocity        = in.tensors<Tensor<1, dim>>("membrane/velocity");
+      m.mass            = in.doubles("membrane/mass");
+      m.force           = in.tensors<Tensor<1, dim>>("membrane/force");
+      m.cell            = in.uints("membrane/cell");
+      m.tangential_slip = in.scalar("membrane/tangential_slip") != 0;
+      m.weights =
+        in.tensors<std::array<double, dim + 1>>("membrane/weights");
+      const unsigned int n = m.position.size();
+      AssertThrow(m.velocity.size() == n && m.mass.size() == n
+                    && m.force.size() == n && m.cell.size() == n,
+                  damaged("its node arrays differ in length"));
+
+      const auto &sizes     = in.uints("membrane/ring_sizes");
+      const auto &nodes     = in.uints("membrane/ring_nodes");
+      const auto &rest      = in.doubles("membrane/ring_rest_length");
+      unsigned int total    = 0;
+      for (const unsigned int s : sizes)
+        total += s;
+      AssertThrow(nodes.size() == total && rest.size() == total,
+                  damaged("its rings do not add up"));
+      m.rings.assign(sizes.size(), {});
+      m.ring_rest_length.assign(sizes.size(), {});
+      for (unsigned int r = 0, k = 0; r < sizes.size(); k += sizes[r], ++r)
+        {
+          m.rings[r].assign(nodes.begin() + k, nodes.begin() + k + sizes[r]);
+          m.ring_rest_length[r].assign(rest.begin() + k,
+                                       rest.begin() + k + sizes[r]);
+        }
+
+      const auto &elements = in.uints("membrane/elements");
+      AssertThrow(elements.size() % dim == 0,
+                  damaged("its element list is not a list of " +
+                          std::to_string(dim) + "-node elements"));
+      m.elements.resize(elements.size() / dim);
+      for (unsigned int e = 0; e < m.elements.size(); ++e)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            m.elements[e][k] = elements[dim * e + k];
+            AssertThrow(m.elements[e][k] < n,
+                        damaged("an element names a node it does not have"));
+          }
+      m.rest_size         = in.doubles("membrane/rest_size");
+      m.tension           = in.doubles("membrane/tension");
+      m.minor_tension     = in.doubles("membrane/minor_tension");
+      const auto &reference = in.doubles("membrane/reference");
+      AssertThrow(reference.size() % 5 == 0,
+                  damaged("its reference triangles are incomplete"));
+      m.reference.resize(reference.size() / 5);
+      for (unsigned int e = 0; e < m.reference.size(); ++e)
+        {
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int j = 0; j < 2; ++j)
+              m.reference[e].dm_inverse[i][j] = reference[5 * e + 2 * i + j];
+          m.reference[e].area = reference[5 * e + 4];
+        }
+      const unsigned int n_elements = m.elements.size();
+      AssertThrow(m.rest_size.size() == n_elements
+                    && m.tension.size() == n_elements
+                    && (m.reference.empty()
+                        || m.reference.size() == n_elements),
+                  damaged("its element arrays differ in length"));
+    }
+
+
+
+    template void
+    save(CheckpointWriter &, const ParticleStore<2> &);
+    template void
+    save(CheckpointWriter &, const ParticleStore<3> &);
+    template void
+    load(const CheckpointReader &, ParticleStore<2> &, const unsigned int);
+    template void
+    load(const CheckpointReader &, ParticleStore<3> &, const unsigned int);
+    template void
+    save(CheckpointWriter &, const Membrane<2> &);
+    template void
+    save(CheckpointWriter &, const Membrane<3> &);
+    template void
+    load(const CheckpointReader &, Membrane<2> &);
+    template void
+    load(const CheckpointReader &, Membrane<3> &);
+  } // namespace StateCheckpoint
+} // namespace fsgmpm

@@ -1,0 +1,311 @@
+/**
+ * Checkpoint and restart of a Simulator (issue 15, section 2): the whole
+ * state in one HDF5 file per checkpoint, written atomically, the last two
+ * kept; a restarted run continues bit for bit as the uninterrupted one.
+ */
+
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/io/checkpoint_file.h>
+#include <fsgmpm/io/monitor_file.h>
+#include <fsgmpm/io/state_checkpoint.h>
+#include <fsgmpm/simulator.h>
+#include <fsgmpm/step/stages.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace fsgmpm
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    /// Parameters a restart may change: where and what it writes, how far
+    /// it runs, and on how many threads. Everything else is the physics of
+    /// the checkpointed run.
+    bool
+    may_change_on_restart(const std::string &path)
+    {
+      return path.rfind("Output/", 0) == 0 || path == "Simulation/End time"
+             || path == "Simulation/Maximum number of steps"
+             || path == "Simulation/Termination"
+             || path == "Simulation/Number of threads";
+    }
+
+    std::string
+    listing_text(const std::vector<std::pair<std::string, std::string>> &list)
+    {
+      std::string text;
+      for (const auto &[path, value] : list)
+        if (!may_change_on_restart(path))
+          text += path + " = " + value + "\n";
+      return text;
+    }
+
+    /// The checkpoints in @p directory, newest first (the names carry the
+    /// step, zero-padded).
+    std::vector<fs::path>
+    checkpoint_files(const fs::path &directory)
+    {
+      std::vector<fs::path> files;
+      if (fs::is_directory(directory))
+        for (const auto &entry : fs::directory_iterator(directory))
+          if (entry.path().extension() == ".h5"
+              && entry.path().filename().string().rfind("checkpoint_", 0)
+                   == 0)
+            files.push_back(entry.path());
+      std::sort(files.rbegin(), files.rend());
+      return files;
+    }
+
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      return Utilities::trim(info.str());
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint(const double wall_seconds)
+  {
+    const fs::path directory =
+      fs::path(params.output_directory) / "checkpoints";
+    fs::create_directories(directory);
+    char name[40];
+    std::snprintf(name, sizeof(name), "checkpoint_%010u", step);
+    {
+      CheckpointWriter out((directory / name).string());
+      out.put("fsgmpm/version", std::string(FSGMPM_VERSION));
+      out.put("fsgmpm/dim", double(dim));
+      out.put("fsgmpm/parameters", listing_text(parameter_listing));
+
+      out.put("run/time", time);
+      out.put("run/dt", std::vector<double>{dt, dt_min, dt_max});
+      out.put("run/step", std::vector<unsigned int>{step});
+      out.put("run/monitors",
+              std::vector<double>{monitors.kinetic_energy,
+                                  monitors.strain_energy,
+                                  monitors.potential_energy,
+                                  monitors.external_work,
+                                  monitors.dissipated_energy,
+                                  monitors.dr_energy_ratio,
+                                  monitors.dr_force_ratio,
+                                  double(monitors.lost_particles),
+                                  monitors.grid_kinetic_energy,
+                                  monitors.free_surface_fraction});
+      // Dynamic relaxation, the rest and convergence counters and the
+      // stability guard's energy history.
+      out.put("run/energies",
+              std::vector<double>{previous_kinetic_energy,
+                                  initial_potential_energy,
+                                  max_kinetic_energy,
+                                  initial_energy,
+                                  external_work_scale});
+      out.put("run/counters",
+              std::vector<unsigned int>{rest_steps, converged_steps});
+      std::vector<double> history;
+      for (const auto &h : energy_history)
+        history.insert(history.end(), h.begin(), h.end());
+      out.put("run/energy_history", history);
+
+      out.put("output/monitor_bytes", double(monitor_file->size()));
+      out.put("output/next_output_time", next_output_time);
+      out.put("output/last_output_step",
+              std::vector<unsigned int>{last_output_step});
+      out.put("output/next_checkpoint_time",
+              params.checkpoint_interval
+                * (std::floor(time * (1 + 1e-12) / params.checkpoint_interval)
+                   + 1));
+      out.put("output/particle_series", particle_series->times());
+      out.put("output/grid_series", grid_series->times());
+      out.put("output/membrane_series", membrane_series->times());
+      out.put("cost/wall_seconds", previous_wall_seconds + wall_seconds);
+      out.put("cost/stage_seconds", stage_seconds);
+      out.put("cost/particle_updates", double(particle_updates));
+
+      StateCheckpoint::save(out, particles);
+      if (membrane)
+        StateCheckpoint::save(out, *membrane);
+      out.commit();
+    }
+    // Keep the newest two.
+    const auto files = checkpoint_files(directory);
+    for (unsigned int k = 2; k < files.size(); ++k)
+      fs::remove(files[k]);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_checkpoint_parameters(const CheckpointReader &in) const
+  {
+    const std::string &file = in.text("fsgmpm/parameters");
+    AssertThrow(in.scalar("fsgmpm/dim") == dim,
+                ExcMessage("The checkpoint is of a " +
+                           std::to_string(int(in.scalar("fsgmpm/dim"))) +
+                           "D run; this scene is " + std::to_string(dim) +
+                           "D."));
+    const std::string here = listing_text(parameter_listing);
+    if (file == here)
+      return;
+    // Name the parameters that differ.
+    std::istringstream a(file), b(here);
+    std::string        la, lb, differences;
+    unsigned int       n = 0;
+    while (true)
+      {
+        const bool more_a = bool(std::getline(a, la));
+        const bool more_b = bool(std::getline(b, lb));
+        if (!more_a && !more_b)
+          break;
+        if (la != lb && ++n <= 5)
+          differences += "\n  checkpoint: " + la + "\n  this run:   " + lb;
+        la.clear();
+        lb.clear();
+      }
+    AssertThrow(false,
+                ExcMessage(
+                  "The scene's parameters differ from those of the "
+                  "checkpointed run (" +
+                  std::to_string(n) + " line(s)):" + differences +
+                  "\nA restart may change only Output/*, Simulation/End "
+                  "time, Maximum number of steps, Termination and Number "
+                  "of threads; run the checkpointed scene's prm with "
+                  "--restart."));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::load_checkpoint(const CheckpointReader &in)
+  {
+    AssertThrow(in.has("membrane/position") == bool(membrane),
+                ExcMessage("The checkpoint's scene and this one differ in "
+                           "having a membrane."));
+    time                  = in.scalar("run/time");
+    const auto &dts       = in.doubles("run/dt");
+    dt                    = dts.at(0);
+    dt_min                = dts.at(1);
+    dt_max                = dts.at(2);
+    step                  = in.uints("run/step").at(0);
+    const auto &m         = in.doubles("run/monitors");
+    monitors.kinetic_energy        = m.at(0);
+    monitors.strain_energy         = m.at(1);
+    monitors.potential_energy      = m.at(2);
+    monitors.external_work         = m.at(3);
+    monitors.dissipated_energy     = m.at(4);
+    monitors.dr_energy_ratio       = m.at(5);
+    monitors.dr_force_ratio        = m.at(6);
+    monitors.lost_particles        = static_cast<unsigned int>(m.at(7));
+    monitors.grid_kinetic_energy   = m.at(8);
+    monitors.free_surface_fraction = m.at(9);
+    const auto &e                  = in.doubles("run/energies");
+    previous_kinetic_energy        = e.at(0);
+    initial_potential_energy       = e.at(1);
+    max_kinetic_energy             = e.at(2);
+    initial_energy                 = e.at(3);
+    external_work_scale            = e.at(4);
+    rest_steps                     = in.uints("run/counters").at(0);
+    converged_steps                = in.uints("run/counters").at(1);
+    const auto &history            = in.doubles("run/energy_history");
+    energy_history.clear();
+    for (unsigned int k = 0; k + 1 < history.size(); k += 2)
+      energy_history.push_back({{history[k], history[k + 1]}});
+
+    resume_monitor_bytes  = in.scalar("output/monitor_bytes");
+    next_output_time      = in.scalar("output/next_output_time");
+    last_output_step      = in.uints("output/last_output_step").at(0);
+    next_checkpoint_time  = in.scalar("output/next_checkpoint_time");
+    resume_series_times   = {{in.doubles("output/particle_series"),
+                              in.doubles("output/grid_series"),
+                              in.doubles("output/membrane_series")}};
+    previous_wall_seconds = in.scalar("cost/wall_seconds");
+    stage_seconds         = in.doubles("cost/stage_seconds");
+    particle_updates =
+      static_cast<unsigned long long>(in.scalar("cost/particle_updates"));
+
+    StateCheckpoint::load(in, particles, grid->n_cells());
+    if (membrane)
+      StateCheckpoint::load(in, *membrane);
+    // The nodal fields of the first step after the restart are rebuilt
+    // from the points, as every step rebuilds them.
+    Stages::p2g(*grid, particles, nodes, params.stress_integration);
+    if (membrane)
+      Stages::membrane_p2g(*grid, *membrane, nodes);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restart(const std::string &directory)
+  {
+    const fs::path dir = fs::path(directory) / "checkpoints";
+    const auto     files = checkpoint_files(dir);
+    AssertThrow(!files.empty(),
+                ExcMessage("--restart " + directory + ": no checkpoint in <" +
+                           dir.string() +
+                           "> (a run writes them with Output/Checkpoint "
+                           "interval > 0)."));
+    std::string damaged;
+    for (const auto &file : files)
+      {
+        std::unique_ptr<CheckpointReader> in;
+        try
+          {
+            in = std::make_unique<CheckpointReader>(file.string());
+          }
+        catch (const ExceptionBase &e)
+          {
+            damaged += "\n  " + message_of(e);
+            std::cerr << "fsgmpm: warning: " << message_of(e)
+                      << " Trying the one before it." << std::endl;
+            continue;
+          }
+        check_checkpoint_parameters(*in);
+        load_checkpoint(*in);
+        AssertThrow(time < params.end_time * (1 - 1e-14) &&
+                      (params.max_steps == 0 || step < params.max_steps),
+                    ExcMessage("The checkpoint <" + file.string() +
+                               "> is at t = " + std::to_string(time) +
+                               " s, step " + std::to_string(step) +
+                               ", already at Simulation/End time or Maximum "
+                               "number of steps; raise them to continue."));
+        params.output_directory = directory;
+        resumed                 = true;
+        if (!params.quiet)
+          std::cout << "fsgmpm: restarting from " << file.string()
+                    << " (t = " << time << " s, step " << step << ")"
+                    << std::endl;
+        return;
+      }
+    AssertThrow(false,
+                ExcMessage("--restart " + directory +
+                           ": no checkpoint reads back intact:" + damaged));
+  }
+
+
+
+  // The members defined here (the class is instantiated in simulator.cc).
+#define FSGMPM_INSTANTIATE(dim)                                              \
+  template void Simulator<dim>::write_checkpoint(const double);              \
+  template void Simulator<dim>::check_checkpoint_parameters(                 \
+    const CheckpointReader &) const;                                         \
+  template void Simulator<dim>::load_checkpoint(const CheckpointReader &);   \
+  template void Simulator<dim>::restart(const std::string &);
+  FSGMPM_INSTANTIATE(2)
+  FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
+} // namespace fsgmpm
