@@ -1002,6 +1002,7 @@ namespace fsgmpm
          {"termination", json_string(termination)},
          {"diagnosis", json_string(diagnosis)},
          {"bytes_per_particle", json_number(particles.bytes_per_particle())},
+         {"checkpoint_seconds", json_number(checkpoint_seconds)},
          {"version", json_string(FSGMPM_VERSION)}};
     write_json(params.output_directory + "/summary.json", entries);
   }

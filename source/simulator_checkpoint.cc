@@ -13,9 +13,11 @@
 #include <fsgmpm/step/stages.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -81,8 +83,10 @@ namespace fsgmpm
     const fs::path directory =
       fs::path(params.output_directory) / "checkpoints";
     fs::create_directories(directory);
-    char name[40];
+    const auto start = std::chrono::steady_clock::now();
+    char       name[40];
     std::snprintf(name, sizeof(name), "checkpoint_%010u", step);
+    std::string file_name;
     {
       CheckpointWriter out((directory / name).string());
       out.put("fsgmpm/version", std::string(FSGMPM_VERSION));
@@ -132,16 +136,25 @@ namespace fsgmpm
       out.put("cost/wall_seconds", previous_wall_seconds + wall_seconds);
       out.put("cost/stage_seconds", stage_seconds);
       out.put("cost/particle_updates", double(particle_updates));
+      out.put("cost/checkpoint_seconds", checkpoint_seconds);
 
       StateCheckpoint::save(out, particles);
       if (membrane)
         StateCheckpoint::save(out, *membrane);
-      out.commit();
+      file_name = out.commit();
     }
     // Keep the newest two.
     const auto files = checkpoint_files(directory);
     for (unsigned int k = 2; k < files.size(); ++k)
       fs::remove(files[k]);
+    const double seconds = std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - start)
+                             .count();
+    checkpoint_seconds += seconds;
+    if (!params.quiet)
+      std::cout << "  checkpoint " << file_name << ": "
+                << std::setprecision(3) << fs::file_size(file_name) / 1e6
+                << " MB in " << seconds << " s" << std::endl;
   }
 
 
@@ -235,6 +248,7 @@ namespace fsgmpm
     stage_seconds         = in.doubles("cost/stage_seconds");
     particle_updates =
       static_cast<unsigned long long>(in.scalar("cost/particle_updates"));
+    checkpoint_seconds = in.scalar("cost/checkpoint_seconds");
 
     StateCheckpoint::load(in, particles, grid->n_cells());
     if (membrane)

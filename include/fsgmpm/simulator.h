@@ -274,6 +274,8 @@ namespace fsgmpm
     /// Every parameter ("Section/Name", value), for the checkpoint.
     std::vector<std::pair<std::string, std::string>> parameter_listing;
     double next_checkpoint_time = 0;
+    /// Wall seconds spent writing checkpoints (summary.json).
+    double checkpoint_seconds = 0;
     /// Set by restart(): the state came from a checkpoint, with these
     /// bytes of monitors.csv, wall seconds and output series before it.
     bool                               resumed               = false;
