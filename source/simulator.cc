@@ -765,16 +765,24 @@ namespace fsgmpm
   Simulator<dim>::write_output()
   {
     const std::string &dir = params.output_directory;
+    const bool hdf5 = params.output_format == "hdf5";
     if (params.write_particles)
       {
         particle_output.build_patches(particles, grid.get(), &nodes);
-        const std::string name = particle_series->next_file(time);
-        write_file_atomically(dir + "/" + name, [&](std::ostream &out) {
-          particle_output.write_vtu(out);
-        });
-        particle_series->write_pvd();
+        if (hdf5)
+          particle_output.write_xdmf(*particle_xdmf, time);
+        else
+          {
+            const std::string name = particle_series->next_file(time);
+            write_file_atomically(dir + "/" + name, [&](std::ostream &out) {
+              particle_output.write_vtu(out);
+            });
+            particle_series->write_pvd();
+          }
       }
-    if (membrane)
+    if (membrane && hdf5)
+      write_membrane_xdmf(*membrane, *membrane_xdmf, time);
+    else if (membrane)
       {
         const std::string name = membrane_series->next_file(time);
         write_membrane_vtu(*membrane, dir + "/" + name);
@@ -805,14 +813,16 @@ namespace fsgmpm
         fs::remove(fs::path(dir) / "monitors.csv");
         fs::remove_all(fs::path(dir) / "checkpoints");
         for (const auto &entry : fs::directory_iterator(dir))
-          if (entry.path().extension() == ".vtu"
-              || entry.path().extension() == ".pvd")
-            fs::remove(entry.path());
+          for (const char *stale : {".vtu", ".pvd", ".h5", ".xdmf"})
+            if (entry.path().extension() == stale)
+              fs::remove(entry.path());
       }
 
     particle_series = std::make_unique<PvdSeries>(dir, "particles");
     grid_series     = std::make_unique<PvdSeries>(dir, "grid");
     membrane_series = std::make_unique<PvdSeries>(dir, "membrane");
+    particle_xdmf   = std::make_unique<XdmfSeries>(dir, "particles");
+    membrane_xdmf   = std::make_unique<XdmfSeries>(dir, "membrane");
     fs::remove(fs::path(dir) / "membrane_shape.csv");
     // Common columns (SPEC 6), the free-surface fraction where a body
     // detects free surfaces, then the scene's own columns.
@@ -877,6 +887,8 @@ namespace fsgmpm
             if (!resume_series_times[k].empty())
               series[k]->write_pvd();
           }
+        particle_xdmf->restore(resume_xdmf_records[0]);
+        membrane_xdmf->restore(resume_xdmf_records[1]);
       }
     else
       {

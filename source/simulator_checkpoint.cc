@@ -133,6 +133,8 @@ namespace fsgmpm
       out.put("output/particle_series", particle_series->times());
       out.put("output/grid_series", grid_series->times());
       out.put("output/membrane_series", membrane_series->times());
+      out.put("output/particle_xdmf", particle_xdmf->records());
+      out.put("output/membrane_xdmf", membrane_xdmf->records());
       out.put("cost/wall_seconds", previous_wall_seconds + wall_seconds);
       out.put("cost/stage_seconds", stage_seconds);
       out.put("cost/particle_updates", double(particle_updates));
@@ -244,6 +246,8 @@ namespace fsgmpm
     resume_series_times   = {{in.doubles("output/particle_series"),
                               in.doubles("output/grid_series"),
                               in.doubles("output/membrane_series")}};
+    resume_xdmf_records   = {{in.doubles("output/particle_xdmf"),
+                              in.doubles("output/membrane_xdmf")}};
     previous_wall_seconds = in.scalar("cost/wall_seconds");
     stage_seconds         = in.doubles("cost/stage_seconds");
     particle_updates =

@@ -267,6 +267,8 @@ namespace fsgmpm
     std::unique_ptr<MonitorFile> monitor_file;
     ParticleOutput<dim>          particle_output;
     std::unique_ptr<PvdSeries>   particle_series, grid_series, membrane_series;
+    /// Output/Format = hdf5: the points' and the membrane's series.
+    std::unique_ptr<XdmfSeries> particle_xdmf, membrane_xdmf;
     double                       next_output_time = 0;
     unsigned int                 last_output_step = 0;
     unsigned long long           particle_updates = 0;
@@ -282,6 +284,7 @@ namespace fsgmpm
     double                             resume_monitor_bytes  = 0;
     double                             previous_wall_seconds = 0;
     std::array<std::vector<double>, 3> resume_series_times;
+    std::array<std::vector<double>, 2> resume_xdmf_records;
   };
 } // namespace fsgmpm
 

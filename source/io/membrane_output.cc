@@ -1,5 +1,6 @@
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/io/xdmf_series.h>
 #include <fsgmpm/particles/body_shape.h>
 
 #include <algorithm>
@@ -9,6 +10,59 @@
 
 namespace fsgmpm
 {
+  namespace
+  {
+    /// Length ratio (2D) or the square root of the area ratio (3D) of
+    /// element @p e to its rest size.
+    template <int dim>
+    double
+    element_stretch(const Membrane<dim> &membrane, const unsigned int e)
+    {
+      const double ratio = membrane.element_size(e) / membrane.rest_size[e];
+      return dim == 2 ? ratio : std::sqrt(ratio);
+    }
+
+    template <int dim>
+    std::vector<double>
+    padded(const std::vector<Tensor<1, dim>> &values)
+    {
+      std::vector<double> out;
+      out.reserve(3 * values.size());
+      for (const auto &v : values)
+        for (unsigned int d = 0; d < 3; ++d)
+          out.push_back(d < dim ? v[d] : 0.);
+      return out;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  write_membrane_xdmf(const Membrane<dim> &membrane,
+                      XdmfSeries          &series,
+                      const double         time)
+  {
+    std::vector<unsigned int> cells;
+    for (const auto &el : membrane.elements)
+      cells.insert(cells.end(), el.begin(), el.end());
+    std::vector<double> stretch(membrane.n_elements());
+    for (unsigned int e = 0; e < membrane.n_elements(); ++e)
+      stretch[e] = element_stretch(membrane, e);
+    std::vector<Tensor<1, dim>> positions(membrane.position.begin(),
+                                          membrane.position.end());
+    series.write(time,
+                 padded(positions),
+                 dim == 2 ? XdmfSeries::CellType::line :
+                            XdmfSeries::CellType::triangle,
+                 cells,
+                 {{"tension", 1, true, membrane.tension},
+                  {"stretch", 1, true, stretch},
+                  {"velocity", 3, false, padded(membrane.velocity)}});
+  }
+
+
+
   template <int dim>
   void
   write_membrane_vtu(const Membrane<dim> &membrane, const std::string &file)
@@ -49,10 +103,7 @@ namespace fsgmpm
       out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"stretch\" "
              "format=\"ascii\">\n";
       for (unsigned int e = 0; e < ne; ++e)
-        out << (dim == 2
-                  ? membrane.element_size(e) / membrane.rest_size[e]
-                  : std::sqrt(membrane.element_size(e) / membrane.rest_size[e]))
-            << '\n';
+        out << element_stretch(membrane, e) << '\n';
       out << "</DataArray>\n</CellData>\n<PointData Vectors=\"velocity\">\n"
           << "<DataArray type=\"Float64\" Name=\"velocity\" "
              "NumberOfComponents=\"3\" format=\"ascii\">\n";
@@ -218,6 +269,9 @@ namespace fsgmpm
 #define FSGMPM_INSTANTIATE(dim)                                      \
   template void write_membrane_vtu<dim>(const Membrane<dim> &,       \
                                         const std::string &);        \
+  template void write_membrane_xdmf<dim>(const Membrane<dim> &,      \
+                                         XdmfSeries &,               \
+                                         const double);              \
   template void write_membrane_shape_csv<dim>(const Membrane<dim> &, \
                                               const std::string &);  \
   template std::map<std::string, double> membrane_monitors<dim>(     \

@@ -91,6 +91,34 @@ namespace fsgmpm
   }
 
   template <int dim>
+  void
+  ParticleOutput<dim>::write_xdmf(XdmfSeries &series, const double time) const
+  {
+    const unsigned int  n = patches.size();
+    std::vector<double> positions(3 * n, 0.);
+    for (unsigned int p = 0; p < n; ++p)
+      for (unsigned int d = 0; d < dim; ++d)
+        positions[3 * p + d] = patches[p].vertices[0][d];
+    const auto names = get_dataset_names();
+    std::vector<XdmfSeries::Field> fields(1 + names.size() - dim);
+    fields[0] = {"velocity", 3, false, std::vector<double>(3 * n, 0.)};
+    for (unsigned int p = 0; p < n; ++p)
+      for (unsigned int d = 0; d < dim; ++d)
+        fields[0].values[3 * p + d] = patches[p].data(d, 0);
+    for (unsigned int f = dim; f < names.size(); ++f)
+      {
+        auto &field = fields[1 + f - dim];
+        field.name  = names[f];
+        field.values.resize(n);
+        for (unsigned int p = 0; p < n; ++p)
+          field.values[p] = patches[p].data(f, 0);
+      }
+    series.write(time, positions, XdmfSeries::CellType::vertex, {}, fields);
+  }
+
+
+
+  template <int dim>
   std::vector<std::string>
   ParticleOutput<dim>::get_dataset_names() const
   {

@@ -5,6 +5,7 @@
 
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/nodal_fields.h>
+#include <fsgmpm/io/xdmf_series.h>
 #include <fsgmpm/particles/particle_store.h>
 
 #include <string>
@@ -30,6 +31,11 @@ namespace fsgmpm
     build_patches(const ParticleStore<dim>  &particles,
                   const BackgroundGrid<dim> *grid  = nullptr,
                   const NodalFields<dim>    *nodes = nullptr);
+
+    /// The patches as a step of an HDF5 + XDMF series (Output/Format =
+    /// hdf5): the same fields as the VTU files, velocity as a 3-vector.
+    void
+    write_xdmf(XdmfSeries &series, const double time) const;
 
   private:
     const std::vector<DataOutBase::Patch<0, dim>> &

@@ -89,6 +89,8 @@ namespace fsgmpm
     unsigned int output_every_steps;
     bool         write_particles;
     bool         write_grid;
+    /// "vtu" or "hdf5" (points and membrane).
+    std::string  output_format;
     unsigned int monitor_every_steps;
     bool         quiet;
   };

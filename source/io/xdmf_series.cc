@@ -1,0 +1,191 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/hdf5.h>
+
+#include <fsgmpm/io/atomic_file.h>
+#include <fsgmpm/io/xdmf_series.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  namespace
+  {
+    unsigned int
+    nodes_per_cell(const XdmfSeries::CellType type)
+    {
+      return type == XdmfSeries::CellType::vertex ?
+               1 :
+               (type == XdmfSeries::CellType::line ? 2 : 3);
+    }
+
+    std::string
+    file_name(const std::string &base_name, const unsigned int index)
+    {
+      std::ostringstream name;
+      name << base_name << "_" << std::setw(5) << std::setfill('0') << index
+           << ".h5";
+      return name.str();
+    }
+
+    /// A dataset of @p rows x @p columns values (deal.II's wrappers do not
+    /// throw when HDF5 fails; HDF5's error stack tells).
+    template <typename Number>
+    void
+    write_table(HDF5::File                &file,
+                const std::string         &name,
+                const std::vector<Number> &values,
+                const unsigned int         columns,
+                const std::string         &path)
+    {
+      const hsize_t rows = values.size() / columns;
+      auto dataset = file.create_dataset<Number>(
+        name,
+        columns == 1 ? std::vector<hsize_t>{rows} :
+                       std::vector<hsize_t>{rows, hsize_t(columns)});
+      dataset.write(values);
+      AssertThrow(H5Eget_num(H5E_DEFAULT) == 0,
+                  ExcMessage("Writing <" + name + "> to <" + path
+                             + "> failed (disk full?)."));
+    }
+  } // namespace
+
+
+
+  XdmfSeries::XdmfSeries(const std::string &directory,
+                         const std::string &base_name)
+    : directory(directory)
+    , base_name(base_name)
+  {}
+
+
+
+  void
+  XdmfSeries::write(const double                     time,
+                    const std::vector<double>       &positions,
+                    const CellType                   type,
+                    const std::vector<unsigned int> &connectivity,
+                    const std::vector<Field>        &fields)
+  {
+    const unsigned int n_nodes = positions.size() / 3;
+    std::vector<unsigned int> cells = connectivity;
+    if (type == CellType::vertex && cells.empty())
+      for (unsigned int i = 0; i < n_nodes; ++i)
+        cells.push_back(i);
+    const unsigned int n_cells = cells.size() / nodes_per_cell(type);
+    // HDF5 datasets cannot be empty: a step without nodes is not written.
+    if (n_nodes == 0 || n_cells == 0)
+      return;
+
+    const std::string name = file_name(base_name, steps.size());
+    const std::string path = directory + "/" + name;
+    const std::string tmp  = path + ".tmp";
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    {
+      HDF5::File file(tmp, HDF5::File::FileAccessMode::create);
+      write_table(file, "nodes", positions, 3, tmp);
+      write_table(file, "cells", cells, nodes_per_cell(type), tmp);
+      for (const auto &f : fields)
+        {
+          AssertThrow(f.values.size()
+                        == f.n_components * (f.on_cells ? n_cells : n_nodes),
+                      ExcInternalError());
+          write_table(file, f.name, f.values, f.n_components, tmp);
+        }
+    }
+    AssertThrow(std::rename(tmp.c_str(), path.c_str()) == 0,
+                ExcMessage("Cannot rename <" + tmp + "> to <" + path + ">."));
+
+    steps.push_back({time, n_nodes, n_cells});
+    cell_type = type;
+    layout.clear();
+    for (const auto &f : fields)
+      layout.push_back({f.name, f.n_components, f.on_cells, {}});
+    write_xdmf();
+  }
+
+
+
+  void
+  XdmfSeries::write_xdmf() const
+  {
+    const char *topology = cell_type == CellType::vertex ?
+                             "Polyvertex" :
+                             (cell_type == CellType::line ? "Polyline" :
+                                                            "Triangle");
+    write_file_atomically(
+      directory + "/" + base_name + ".xdmf", [&](std::ostream &out) {
+        out << "<?xml version=\"1.0\" ?>\n"
+            << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+            << "<Xdmf Version=\"2.0\">\n<Domain>\n"
+            << "<Grid Name=\"" << base_name
+            << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+        out << std::setprecision(17);
+        for (unsigned int s = 0; s < steps.size(); ++s)
+          {
+            const auto       &r = steps[s];
+            const std::string h5 = file_name(base_name, s);
+            out << "<Grid Name=\"" << base_name << "\" GridType=\"Uniform\">\n"
+                << "  <Time Value=\"" << r.time << "\"/>\n"
+                << "  <Geometry GeometryType=\"XYZ\">\n"
+                << "    <DataItem Dimensions=\"" << r.n_nodes
+                << " 3\" NumberType=\"Float\" Precision=\"8\" "
+                   "Format=\"HDF\">"
+                << h5 << ":/nodes</DataItem>\n  </Geometry>\n"
+                << "  <Topology TopologyType=\"" << topology
+                << "\" NumberOfElements=\"" << r.n_cells
+                << "\" NodesPerElement=\"" << nodes_per_cell(cell_type)
+                << "\">\n    <DataItem Dimensions=\"" << r.n_cells << " "
+                << nodes_per_cell(cell_type)
+                << "\" NumberType=\"UInt\" Precision=\"4\" Format=\"HDF\">"
+                << h5 << ":/cells</DataItem>\n  </Topology>\n";
+            for (const auto &f : layout)
+              {
+                const unsigned int n = f.on_cells ? r.n_cells : r.n_nodes;
+                out << "  <Attribute Name=\"" << f.name
+                    << "\" AttributeType=\""
+                    << (f.n_components == 1 ? "Scalar" : "Vector")
+                    << "\" Center=\"" << (f.on_cells ? "Cell" : "Node")
+                    << "\">\n    <DataItem Dimensions=\"" << n;
+                if (f.n_components > 1)
+                  out << " " << f.n_components;
+                out << "\" NumberType=\"Float\" Precision=\"8\" "
+                       "Format=\"HDF\">"
+                    << h5 << ":/" << f.name
+                    << "</DataItem>\n  </Attribute>\n";
+              }
+            out << "</Grid>\n";
+          }
+        out << "</Grid>\n</Domain>\n</Xdmf>\n";
+      });
+  }
+
+
+
+  std::vector<double>
+  XdmfSeries::records() const
+  {
+    std::vector<double> r;
+    for (const auto &s : steps)
+      r.insert(r.end(), {s.time, double(s.n_nodes), double(s.n_cells)});
+    return r;
+  }
+
+
+
+  void
+  XdmfSeries::restore(const std::vector<double> &records)
+  {
+    AssertThrow(records.size() % 3 == 0,
+                ExcMessage("The checkpoint's output series is damaged."));
+    steps.clear();
+    for (unsigned int k = 0; k < records.size(); k += 3)
+      steps.push_back({records[k],
+                       static_cast<unsigned int>(records[k + 1]),
+                       static_cast<unsigned int>(records[k + 2])});
+  }
+} // namespace fsgmpm
