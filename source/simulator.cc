@@ -764,8 +764,8 @@ namespace fsgmpm
   void
   Simulator<dim>::write_output()
   {
-    const std::string &dir = params.output_directory;
-    const bool hdf5 = params.output_format == "hdf5";
+    const std::string &dir  = params.output_directory;
+    const bool         hdf5 = params.output_format == "hdf5";
     if (params.write_particles)
       {
         particle_output.build_patches(particles, grid.get(), &nodes);
@@ -848,8 +848,8 @@ namespace fsgmpm
     monitor_file
       = resumed ? std::make_unique<MonitorFile>(dir + "/monitors.csv",
                                                 columns,
-                                                resume_monitor_bytes) :
-                  std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
+                                                resume_monitor_bytes)
+                : std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
     auto write_monitor_row = [&] {
       std::vector<double> row = {time,
                                  double(step),
@@ -877,9 +877,8 @@ namespace fsgmpm
       {
         // The series as they were at the checkpoint; files written after
         // it are written again under the same names.
-        PvdSeries *series[3] = {particle_series.get(),
-                                grid_series.get(),
-                                membrane_series.get()};
+        PvdSeries *series[3]
+          = {particle_series.get(), grid_series.get(), membrane_series.get()};
         for (unsigned int k = 0; k < 3; ++k)
           {
             for (const double t : resume_series_times[k])

@@ -58,8 +58,7 @@ namespace fsgmpm
       if (fs::is_directory(directory))
         for (const auto &entry : fs::directory_iterator(directory))
           if (entry.path().extension() == ".h5"
-              && entry.path().filename().string().rfind("checkpoint_", 0)
-                   == 0)
+              && entry.path().filename().string().rfind("checkpoint_", 0) == 0)
             files.push_back(entry.path());
       std::sort(files.rbegin(), files.rend());
       return files;
@@ -80,8 +79,8 @@ namespace fsgmpm
   void
   Simulator<dim>::write_checkpoint(const double wall_seconds)
   {
-    const fs::path directory =
-      fs::path(params.output_directory) / "checkpoints";
+    const fs::path directory
+      = fs::path(params.output_directory) / "checkpoints";
     fs::create_directories(directory);
     const auto start = std::chrono::steady_clock::now();
     char       name[40];
@@ -149,14 +148,14 @@ namespace fsgmpm
     const auto files = checkpoint_files(directory);
     for (unsigned int k = 2; k < files.size(); ++k)
       fs::remove(files[k]);
-    const double seconds = std::chrono::duration<double>(
-                             std::chrono::steady_clock::now() - start)
-                             .count();
+    const double seconds
+      = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
     checkpoint_seconds += seconds;
     if (!params.quiet)
-      std::cout << "  checkpoint " << file_name << ": "
-                << std::setprecision(3) << fs::file_size(file_name) / 1e6
-                << " MB in " << seconds << " s" << std::endl;
+      std::cout << "  checkpoint " << file_name << ": " << std::setprecision(3)
+                << fs::file_size(file_name) / 1e6 << " MB in " << seconds
+                << " s" << std::endl;
   }
 
 
@@ -167,10 +166,10 @@ namespace fsgmpm
   {
     const std::string &file = in.text("fsgmpm/parameters");
     AssertThrow(in.scalar("fsgmpm/dim") == dim,
-                ExcMessage("The checkpoint is of a " +
-                           std::to_string(int(in.scalar("fsgmpm/dim"))) +
-                           "D run; this scene is " + std::to_string(dim) +
-                           "D."));
+                ExcMessage("The checkpoint is of a "
+                           + std::to_string(int(in.scalar("fsgmpm/dim")))
+                           + "D run; this scene is " + std::to_string(dim)
+                           + "D."));
     const std::string here = listing_text(parameter_listing);
     if (file == here)
       return;
@@ -192,12 +191,12 @@ namespace fsgmpm
     AssertThrow(false,
                 ExcMessage(
                   "The scene's parameters differ from those of the "
-                  "checkpointed run (" +
-                  std::to_string(n) + " line(s)):" + differences +
-                  "\nA restart may change only Output/*, Simulation/End "
-                  "time, Maximum number of steps, Termination and Number "
-                  "of threads; run the checkpointed scene's prm with "
-                  "--restart."));
+                  "checkpointed run ("
+                  + std::to_string(n) + " line(s)):" + differences
+                  + "\nA restart may change only Output/*, Simulation/End "
+                    "time, Maximum number of steps, Termination and Number "
+                    "of threads; run the checkpointed scene's prm with "
+                    "--restart."));
   }
 
 
@@ -209,13 +208,13 @@ namespace fsgmpm
     AssertThrow(in.has("membrane/position") == bool(membrane),
                 ExcMessage("The checkpoint's scene and this one differ in "
                            "having a membrane."));
-    time                  = in.scalar("run/time");
-    const auto &dts       = in.doubles("run/dt");
-    dt                    = dts.at(0);
-    dt_min                = dts.at(1);
-    dt_max                = dts.at(2);
-    step                  = in.uints("run/step").at(0);
-    const auto &m         = in.doubles("run/monitors");
+    time                           = in.scalar("run/time");
+    const auto &dts                = in.doubles("run/dt");
+    dt                             = dts.at(0);
+    dt_min                         = dts.at(1);
+    dt_max                         = dts.at(2);
+    step                           = in.uints("run/step").at(0);
+    const auto &m                  = in.doubles("run/monitors");
     monitors.kinetic_energy        = m.at(0);
     monitors.strain_energy         = m.at(1);
     monitors.potential_energy      = m.at(2);
@@ -239,19 +238,19 @@ namespace fsgmpm
     for (unsigned int k = 0; k + 1 < history.size(); k += 2)
       energy_history.push_back({{history[k], history[k + 1]}});
 
-    resume_monitor_bytes  = in.scalar("output/monitor_bytes");
-    next_output_time      = in.scalar("output/next_output_time");
-    last_output_step      = in.uints("output/last_output_step").at(0);
-    next_checkpoint_time  = in.scalar("output/next_checkpoint_time");
-    resume_series_times   = {{in.doubles("output/particle_series"),
-                              in.doubles("output/grid_series"),
-                              in.doubles("output/membrane_series")}};
-    resume_xdmf_records   = {{in.doubles("output/particle_xdmf"),
-                              in.doubles("output/membrane_xdmf")}};
+    resume_monitor_bytes = in.scalar("output/monitor_bytes");
+    next_output_time     = in.scalar("output/next_output_time");
+    last_output_step     = in.uints("output/last_output_step").at(0);
+    next_checkpoint_time = in.scalar("output/next_checkpoint_time");
+    resume_series_times  = {{in.doubles("output/particle_series"),
+                             in.doubles("output/grid_series"),
+                             in.doubles("output/membrane_series")}};
+    resume_xdmf_records  = {
+       {in.doubles("output/particle_xdmf"), in.doubles("output/membrane_xdmf")}};
     previous_wall_seconds = in.scalar("cost/wall_seconds");
     stage_seconds         = in.doubles("cost/stage_seconds");
-    particle_updates =
-      static_cast<unsigned long long>(in.scalar("cost/particle_updates"));
+    particle_updates
+      = static_cast<unsigned long long>(in.scalar("cost/particle_updates"));
     checkpoint_seconds = in.scalar("cost/checkpoint_seconds");
 
     StateCheckpoint::load(in, particles, grid->n_cells());
@@ -270,13 +269,13 @@ namespace fsgmpm
   void
   Simulator<dim>::restart(const std::string &directory)
   {
-    const fs::path dir = fs::path(directory) / "checkpoints";
+    const fs::path dir   = fs::path(directory) / "checkpoints";
     const auto     files = checkpoint_files(dir);
     AssertThrow(!files.empty(),
-                ExcMessage("--restart " + directory + ": no checkpoint in <" +
-                           dir.string() +
-                           "> (a run writes them with Output/Checkpoint "
-                           "interval > 0)."));
+                ExcMessage("--restart " + directory + ": no checkpoint in <"
+                           + dir.string()
+                           + "> (a run writes them with Output/Checkpoint "
+                             "interval > 0)."));
     std::string damaged;
     for (const auto &file : files)
       {
@@ -294,13 +293,13 @@ namespace fsgmpm
           }
         check_checkpoint_parameters(*in);
         load_checkpoint(*in);
-        AssertThrow(time < params.end_time * (1 - 1e-14) &&
-                      (params.max_steps == 0 || step < params.max_steps),
-                    ExcMessage("The checkpoint <" + file.string() +
-                               "> is at t = " + std::to_string(time) +
-                               " s, step " + std::to_string(step) +
-                               ", already at Simulation/End time or Maximum "
-                               "number of steps; raise them to continue."));
+        AssertThrow(time < params.end_time * (1 - 1e-14)
+                      && (params.max_steps == 0 || step < params.max_steps),
+                    ExcMessage("The checkpoint <" + file.string()
+                               + "> is at t = " + std::to_string(time)
+                               + " s, step " + std::to_string(step)
+                               + ", already at Simulation/End time or Maximum "
+                                 "number of steps; raise them to continue."));
         params.output_directory = directory;
         resumed                 = true;
         if (!params.quiet)
@@ -310,18 +309,18 @@ namespace fsgmpm
         return;
       }
     AssertThrow(false,
-                ExcMessage("--restart " + directory +
-                           ": no checkpoint reads back intact:" + damaged));
+                ExcMessage("--restart " + directory
+                           + ": no checkpoint reads back intact:" + damaged));
   }
 
 
 
   // The members defined here (the class is instantiated in simulator.cc).
-#define FSGMPM_INSTANTIATE(dim)                                              \
-  template void Simulator<dim>::write_checkpoint(const double);              \
-  template void Simulator<dim>::check_checkpoint_parameters(                 \
-    const CheckpointReader &) const;                                         \
-  template void Simulator<dim>::load_checkpoint(const CheckpointReader &);   \
+#define FSGMPM_INSTANTIATE(dim)                                            \
+  template void Simulator<dim>::write_checkpoint(const double);            \
+  template void Simulator<dim>::check_checkpoint_parameters(               \
+    const CheckpointReader &) const;                                       \
+  template void Simulator<dim>::load_checkpoint(const CheckpointReader &); \
   template void Simulator<dim>::restart(const std::string &);
   FSGMPM_INSTANTIATE(2)
   FSGMPM_INSTANTIATE(3)

@@ -269,13 +269,13 @@ namespace fsgmpm
     std::unique_ptr<PvdSeries>   particle_series, grid_series, membrane_series;
     /// Output/Format = hdf5: the points' and the membrane's series.
     std::unique_ptr<XdmfSeries> particle_xdmf, membrane_xdmf;
-    double                       next_output_time = 0;
-    unsigned int                 last_output_step = 0;
-    unsigned long long           particle_updates = 0;
+    double                      next_output_time = 0;
+    unsigned int                last_output_step = 0;
+    unsigned long long          particle_updates = 0;
 
     /// Every parameter ("Section/Name", value), for the checkpoint.
     std::vector<std::pair<std::string, std::string>> parameter_listing;
-    double next_checkpoint_time = 0;
+    double                                           next_checkpoint_time = 0;
     /// Wall seconds spent writing checkpoints (summary.json).
     double checkpoint_seconds = 0;
     /// Set by restart(): the state came from a checkpoint, with these

@@ -205,8 +205,8 @@ main(int argc, char **argv)
         }
 
       const unsigned int dim = fsgmpm::get_dimension(prm);
-      return dim == 2 ? run_scene<2>(prm, restart_directory) :
-                        run_scene<3>(prm, restart_directory);
+      return dim == 2 ? run_scene<2>(prm, restart_directory)
+                      : run_scene<3>(prm, restart_directory);
     }
   catch (dealii::ExceptionBase &e)
     {

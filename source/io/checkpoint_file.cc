@@ -93,8 +93,8 @@ namespace fsgmpm
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     try
       {
-        file = std::make_unique<HDF5::File>(
-          tmp_name, HDF5::File::FileAccessMode::create);
+        file = std::make_unique<HDF5::File>(tmp_name,
+                                            HDF5::File::FileAccessMode::create);
       }
     catch (...)
       {
@@ -178,8 +178,8 @@ namespace fsgmpm
                 ExcMessage("<" + file_name
                            + "> is not named as an fsgmpm checkpoint "
                              "(checkpoint_STEP_HASH.h5)."));
-    const std::string named = file_name.substr(underscore + 1,
-                                               dot - underscore - 1);
+    const std::string named
+      = file_name.substr(underscore + 1, dot - underscore - 1);
     const std::string found = hex(file_hash(file_name));
     AssertThrow(named == found,
                 ExcMessage("Cannot read the checkpoint <" + file_name
@@ -200,10 +200,10 @@ namespace fsgmpm
         std::string line;
         while (std::getline(list, line))
           {
-            const auto  first = line.find(' '), last = line.rfind(' ');
-            const char  kind  = line[0];
-            const auto  name  = line.substr(first + 1, last - first - 1);
-            const auto  size  = std::stoul(line.substr(last + 1));
+            const auto first = line.find(' '), last = line.rfind(' ');
+            const char kind = line[0];
+            const auto name = line.substr(first + 1, last - first - 1);
+            const auto size = std::stoul(line.substr(last + 1));
             if (kind == 'd')
               {
                 auto &v = double_data[name];

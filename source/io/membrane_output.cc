@@ -53,8 +53,8 @@ namespace fsgmpm
                                           membrane.position.end());
     series.write(time,
                  padded(positions),
-                 dim == 2 ? XdmfSeries::CellType::line :
-                            XdmfSeries::CellType::triangle,
+                 dim == 2 ? XdmfSeries::CellType::line
+                          : XdmfSeries::CellType::triangle,
                  cells,
                  {{"tension", 1, true, membrane.tension},
                   {"stretch", 1, true, stretch},

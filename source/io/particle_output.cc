@@ -99,7 +99,7 @@ namespace fsgmpm
     for (unsigned int p = 0; p < n; ++p)
       for (unsigned int d = 0; d < dim; ++d)
         positions[3 * p + d] = patches[p].vertices[0][d];
-    const auto names = get_dataset_names();
+    const auto                     names = get_dataset_names();
     std::vector<XdmfSeries::Field> fields(1 + names.size() - dim);
     fields[0] = {"velocity", 3, false, std::vector<double>(3 * n, 0.)};
     for (unsigned int p = 0; p < n; ++p)

@@ -10,8 +10,7 @@ namespace fsgmpm
     {
       out.put_tensors("particles/position", p.position);
       out.put_tensors("particles/velocity", p.velocity);
-      out.put("particles/has_affine_velocity",
-              double(p.has_affine_velocity()));
+      out.put("particles/has_affine_velocity", double(p.has_affine_velocity()));
       out.put_tensors("particles/affine_velocity", p.affine_velocity);
       out.put_tensors("particles/stress", p.stress);
       out.put("particles/mass", p.mass);
@@ -35,16 +34,16 @@ namespace fsgmpm
       p.velocity = in.tensors<Tensor<1, dim>>("particles/velocity");
       if (in.scalar("particles/has_affine_velocity") != 0)
         p.enable_affine_velocity();
-      p.affine_velocity =
-        in.tensors<Tensor<2, dim>>("particles/affine_velocity");
-      p.stress           = in.tensors<SymmetricTensor<2, 3>>("particles/stress");
-      p.mass             = in.doubles("particles/mass");
-      p.volume           = in.doubles("particles/volume");
+      p.affine_velocity
+        = in.tensors<Tensor<2, dim>>("particles/affine_velocity");
+      p.stress = in.tensors<SymmetricTensor<2, 3>>("particles/stress");
+      p.mass   = in.doubles("particles/mass");
+      p.volume = in.doubles("particles/volume");
       p.reference_volume = in.doubles("particles/reference_volume");
       p.cell             = in.uints("particles/cell");
-      p.material_id = in.integers<std::uint16_t>("particles/material_id");
-      p.body_id     = in.integers<std::uint16_t>("particles/body_id");
-      p.free_surface = in.integers<std::uint8_t>("particles/free_surface");
+      p.material_id      = in.integers<std::uint16_t>("particles/material_id");
+      p.body_id          = in.integers<std::uint16_t>("particles/body_id");
+      p.free_surface     = in.integers<std::uint8_t>("particles/free_surface");
       const unsigned int n = p.position.size();
       for (const std::size_t size : {p.velocity.size(),
                                      p.stress.size(),
@@ -58,15 +57,13 @@ namespace fsgmpm
         AssertThrow(size == n,
                     ExcMessage("The checkpoint's point arrays differ in "
                                "length: it is damaged."));
-      AssertThrow(p.affine_velocity.size()
-                    == (p.has_affine_velocity() ? n : 0),
+      AssertThrow(p.affine_velocity.size() == (p.has_affine_velocity() ? n : 0),
                   ExcMessage("The checkpoint's affine velocities do not "
                              "match its points: it is damaged."));
       for (const unsigned int c : p.cell)
         AssertThrow(c < n_cells,
                     ExcMessage("The checkpoint names cell " + std::to_string(c)
-                               + ", but the mesh has "
-                               + std::to_string(n_cells)
+                               + ", but the mesh has " + std::to_string(n_cells)
                                + " cells: it was written for another mesh."));
       // The points were stored sorted by cell (relocate sorts them after
       // every step); the stable sort keeps their order and rebuilds the
@@ -136,17 +133,16 @@ namespace fsgmpm
       m.force           = in.tensors<Tensor<1, dim>>("membrane/force");
       m.cell            = in.uints("membrane/cell");
       m.tangential_slip = in.scalar("membrane/tangential_slip") != 0;
-      m.weights =
-        in.tensors<std::array<double, dim + 1>>("membrane/weights");
+      m.weights = in.tensors<std::array<double, dim + 1>>("membrane/weights");
       const unsigned int n = m.position.size();
       AssertThrow(m.velocity.size() == n && m.mass.size() == n
                     && m.force.size() == n && m.cell.size() == n,
                   damaged("its node arrays differ in length"));
 
-      const auto &sizes     = in.uints("membrane/ring_sizes");
-      const auto &nodes     = in.uints("membrane/ring_nodes");
-      const auto &rest      = in.doubles("membrane/ring_rest_length");
-      unsigned int total    = 0;
+      const auto  &sizes = in.uints("membrane/ring_sizes");
+      const auto  &nodes = in.uints("membrane/ring_nodes");
+      const auto  &rest  = in.doubles("membrane/ring_rest_length");
+      unsigned int total = 0;
       for (const unsigned int s : sizes)
         total += s;
       AssertThrow(nodes.size() == total && rest.size() == total,
@@ -162,8 +158,8 @@ namespace fsgmpm
 
       const auto &elements = in.uints("membrane/elements");
       AssertThrow(elements.size() % dim == 0,
-                  damaged("its element list is not a list of " +
-                          std::to_string(dim) + "-node elements"));
+                  damaged("its element list is not a list of "
+                          + std::to_string(dim) + "-node elements"));
       m.elements.resize(elements.size() / dim);
       for (unsigned int e = 0; e < m.elements.size(); ++e)
         for (unsigned int k = 0; k < dim; ++k)
@@ -172,9 +168,9 @@ namespace fsgmpm
             AssertThrow(m.elements[e][k] < n,
                         damaged("an element names a node it does not have"));
           }
-      m.rest_size         = in.doubles("membrane/rest_size");
-      m.tension           = in.doubles("membrane/tension");
-      m.minor_tension     = in.doubles("membrane/minor_tension");
+      m.rest_size           = in.doubles("membrane/rest_size");
+      m.tension             = in.doubles("membrane/tension");
+      m.minor_tension       = in.doubles("membrane/minor_tension");
       const auto &reference = in.doubles("membrane/reference");
       AssertThrow(reference.size() % 5 == 0,
                   damaged("its reference triangles are incomplete"));

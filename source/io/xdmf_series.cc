@@ -18,9 +18,9 @@ namespace fsgmpm
     unsigned int
     nodes_per_cell(const XdmfSeries::CellType type)
     {
-      return type == XdmfSeries::CellType::vertex ?
-               1 :
-               (type == XdmfSeries::CellType::line ? 2 : 3);
+      return type == XdmfSeries::CellType::vertex
+               ? 1
+               : (type == XdmfSeries::CellType::line ? 2 : 3);
     }
 
     std::string
@@ -42,11 +42,11 @@ namespace fsgmpm
                 const unsigned int         columns,
                 const std::string         &path)
     {
-      const hsize_t rows = values.size() / columns;
-      auto dataset = file.create_dataset<Number>(
+      const hsize_t rows    = values.size() / columns;
+      auto          dataset = file.create_dataset<Number>(
         name,
-        columns == 1 ? std::vector<hsize_t>{rows} :
-                       std::vector<hsize_t>{rows, hsize_t(columns)});
+        columns == 1 ? std::vector<hsize_t>{rows}
+                              : std::vector<hsize_t>{rows, hsize_t(columns)});
       dataset.write(values);
       AssertThrow(H5Eget_num(H5E_DEFAULT) == 0,
                   ExcMessage("Writing <" + name + "> to <" + path
@@ -71,8 +71,8 @@ namespace fsgmpm
                     const std::vector<unsigned int> &connectivity,
                     const std::vector<Field>        &fields)
   {
-    const unsigned int n_nodes = positions.size() / 3;
-    std::vector<unsigned int> cells = connectivity;
+    const unsigned int        n_nodes = positions.size() / 3;
+    std::vector<unsigned int> cells   = connectivity;
     if (type == CellType::vertex && cells.empty())
       for (unsigned int i = 0; i < n_nodes; ++i)
         cells.push_back(i);
@@ -113,10 +113,10 @@ namespace fsgmpm
   void
   XdmfSeries::write_xdmf() const
   {
-    const char *topology = cell_type == CellType::vertex ?
-                             "Polyvertex" :
-                             (cell_type == CellType::line ? "Polyline" :
-                                                            "Triangle");
+    const char *topology
+      = cell_type == CellType::vertex
+          ? "Polyvertex"
+          : (cell_type == CellType::line ? "Polyline" : "Triangle");
     write_file_atomically(
       directory + "/" + base_name + ".xdmf", [&](std::ostream &out) {
         out << "<?xml version=\"1.0\" ?>\n"
@@ -127,7 +127,7 @@ namespace fsgmpm
         out << std::setprecision(17);
         for (unsigned int s = 0; s < steps.size(); ++s)
           {
-            const auto       &r = steps[s];
+            const auto       &r  = steps[s];
             const std::string h5 = file_name(base_name, s);
             out << "<Grid Name=\"" << base_name << "\" GridType=\"Uniform\">\n"
                 << "  <Time Value=\"" << r.time << "\"/>\n"
@@ -146,8 +146,7 @@ namespace fsgmpm
             for (const auto &f : layout)
               {
                 const unsigned int n = f.on_cells ? r.n_cells : r.n_nodes;
-                out << "  <Attribute Name=\"" << f.name
-                    << "\" AttributeType=\""
+                out << "  <Attribute Name=\"" << f.name << "\" AttributeType=\""
                     << (f.n_components == 1 ? "Scalar" : "Vector")
                     << "\" Center=\"" << (f.on_cells ? "Cell" : "Node")
                     << "\">\n    <DataItem Dimensions=\"" << n;
@@ -155,8 +154,7 @@ namespace fsgmpm
                   out << " " << f.n_components;
                 out << "\" NumberType=\"Float\" Precision=\"8\" "
                        "Format=\"HDF\">"
-                    << h5 << ":/" << f.name
-                    << "</DataItem>\n  </Attribute>\n";
+                    << h5 << ":/" << f.name << "</DataItem>\n  </Attribute>\n";
               }
             out << "</Grid>\n";
           }

@@ -29,8 +29,7 @@ namespace fsgmpm
       // vector: it writes through this reference.
       thread_local std::vector<Tensor<1, dim>> updated_velocity;
       thread_local std::vector<double>         filled_volume_scratch;
-      std::vector<double>                     &filled_volume =
-        filled_volume_scratch;
+      std::vector<double> &filled_volume = filled_volume_scratch;
       if (affine)
         {
           updated_velocity.resize(grid.n_nodes());

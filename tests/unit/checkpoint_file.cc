@@ -78,20 +78,22 @@ namespace
 
 TEST(CheckpointFile, RoundTripBitForBit)
 {
-  Directory        dir;
+  Directory         dir;
   const std::string file = write_example((dir.path / "c_0000000001").string());
   EXPECT_FALSE(std::filesystem::exists(dir.path / "c_0000000001.h5.tmp"));
-  const CheckpointReader in(file);
-  const auto            &d = in.doubles("a/doubles");
-  const std::vector<double> expected = {1.0 / 3.0,
-                                        -0.0,
-                                        std::numeric_limits<double>::denorm_min(),
-                                        std::numeric_limits<double>::infinity(),
-                                        -1e308};
+  const CheckpointReader    in(file);
+  const auto               &d = in.doubles("a/doubles");
+  const std::vector<double> expected
+    = {1.0 / 3.0,
+       -0.0,
+       std::numeric_limits<double>::denorm_min(),
+       std::numeric_limits<double>::infinity(),
+       -1e308};
   ASSERT_EQ(d.size(), expected.size());
   EXPECT_EQ(std::memcmp(d.data(), expected.data(), d.size() * sizeof(double)),
             0);
-  EXPECT_EQ(in.uints("a/uints"), (std::vector<unsigned int>{0u, 7u, 4294967295u}));
+  EXPECT_EQ(in.uints("a/uints"),
+            (std::vector<unsigned int>{0u, 7u, 4294967295u}));
   EXPECT_TRUE(in.doubles("empty").empty());
   EXPECT_EQ(in.text("text"), "Simulation/End time = 1\n");
   const auto points = in.tensors<Point<2>>("points");
@@ -102,7 +104,9 @@ TEST(CheckpointFile, RoundTripBitForBit)
   EXPECT_EQ(stress[0][2][2], -1.);
   EXPECT_EQ(in.integers<std::uint16_t>("ids"),
             (std::vector<std::uint16_t>{65535, 3}));
-  EXPECT_NE(message_of([&] { in.doubles("missing"); }).find("no entry <missing>"),
+  EXPECT_NE(message_of([&] {
+              in.doubles("missing");
+            }).find("no entry <missing>"),
             std::string::npos);
 }
 
@@ -121,17 +125,22 @@ TEST(CheckpointFile, DamagedFilesAreRefused)
     f.seekp(size / 2);
     f.put(char(c ^ 1));
   }
-  EXPECT_NE(message_of([&] { CheckpointReader in(file); }).find("it is damaged"),
+  EXPECT_NE(message_of([&] {
+              CheckpointReader in(file);
+            }).find("it is damaged"),
             std::string::npos);
 
   // Truncated.
   const std::string file2 = write_example((dir.path / "c_0000000003").string());
   std::filesystem::resize_file(file2, std::filesystem::file_size(file2) / 2);
-  EXPECT_NE(message_of([&] { CheckpointReader in(file2); }).find("it is damaged"),
+  EXPECT_NE(message_of([&] {
+              CheckpointReader in(file2);
+            }).find("it is damaged"),
             std::string::npos);
 
   // Not a checkpoint's name.
-  EXPECT_NE(message_of([&] { CheckpointReader in((dir.path / "x").string()); })
-              .find("not named as an fsgmpm checkpoint"),
+  EXPECT_NE(message_of([&] {
+              CheckpointReader in((dir.path / "x").string());
+            }).find("not named as an fsgmpm checkpoint"),
             std::string::npos);
 }

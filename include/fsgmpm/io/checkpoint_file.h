@@ -147,11 +147,10 @@ namespace fsgmpm
     const auto    &flat = doubles(name);
     constexpr auto n    = sizeof(T) / sizeof(double);
     AssertThrow(flat.size() % n == 0,
-                dealii::ExcMessage("The checkpoint <" + file_name
-                                   + "> is damaged: its entry <" + name
-                                   + "> has " + std::to_string(flat.size())
-                                   + " values, not a multiple of "
-                                   + std::to_string(n) + "."));
+                dealii::ExcMessage(
+                  "The checkpoint <" + file_name + "> is damaged: its entry <"
+                  + name + "> has " + std::to_string(flat.size())
+                  + " values, not a multiple of " + std::to_string(n) + "."));
     std::vector<T> data(flat.size() / n);
     if (!data.empty())
       std::memcpy(data.data(), flat.data(), flat.size() * sizeof(double));

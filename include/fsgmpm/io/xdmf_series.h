@@ -44,11 +44,11 @@ namespace fsgmpm
     /// @p connectivity (nodes_per_cell numbers per cell; empty for
     /// vertices: cell i is node i), the fields; then rewrite BASE.xdmf.
     void
-    write(const double                      time,
-          const std::vector<double>        &positions,
-          const CellType                    cell_type,
-          const std::vector<unsigned int>  &connectivity,
-          const std::vector<Field>         &fields);
+    write(const double                     time,
+          const std::vector<double>       &positions,
+          const CellType                   cell_type,
+          const std::vector<unsigned int> &connectivity,
+          const std::vector<Field>        &fields);
 
     /// (time, nodes, cells) of every step written, for a checkpoint.
     std::vector<double>

@@ -82,8 +82,8 @@ namespace fsgmpm
     MovingWallParameters                        moving_wall;
 
     // Output
-    std::string  output_directory;
-    double       output_interval;
+    std::string output_directory;
+    double      output_interval;
     /// Simulated time between checkpoints (0: none).
     double       checkpoint_interval;
     unsigned int output_every_steps;
