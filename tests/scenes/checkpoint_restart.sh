@@ -79,6 +79,10 @@ run_scene granular "$src/prm/granular_column_collapse.prm" 0.05 \
 run_scene geotube "$src/prm/geotube_A5.56.prm" 0.5 \
   --set "Grid/Cell size=0.32" --set "Simulation/End time=6" \
   --set "Simulation/Termination=end_time" --set "Output/Format=hdf5"
+# The 3D geotube (membrane triangles with their reference shapes).
+run_scene geotube_3d "$src/prm/geotube_A5.56_3d.prm" 0.1 \
+  --set "Grid/Cell size=0.32" --set "Grid/Extrusion thickness=0.32" \
+  --set "Simulation/End time=0.6" --set "Simulation/Termination=end_time"
 # The geocontainer (sand, geotextile no-slip, water in its own field, contact).
 run_scene geocontainer "$src/prm/geocontainer_polygon.prm" 0.02 \
   --set "Grid/Cell size=0.08" --set "Simulation/End time=0.2"
