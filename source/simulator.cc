@@ -75,6 +75,9 @@ namespace fsgmpm
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler &prm)
     : params(prm)
+    , stability_guard({params.energy_creation_tolerance,
+                       params.ke_growth_factor,
+                       params.ke_growth_window})
     , stage_seconds(n_stages, 0.)
     , parameter_listing(parameter_values(prm))
   {
@@ -173,11 +176,7 @@ namespace fsgmpm
       initial_potential_energy
         -= particles.mass[p]
            * (params.gravity * (particles.position[p] - grid->lower_corner));
-    energy_history.clear();
-    energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
-                               monitors.external_work}});
-    initial_energy      = monitors.kinetic_energy + monitors.strain_energy;
-    external_work_scale = std::abs(monitors.external_work);
+    stability_guard.reset(monitors);
   }
 
 
@@ -398,7 +397,7 @@ namespace fsgmpm
   Simulator<dim>::check_stability(const double displacement_ratio)
   {
     auto fail = [&](const std::string &what) {
-      termination = "unstable";
+      termination = Termination::unstable;
       // Locate the fastest (or a non-finite) point for the diagnosis.
       unsigned int worst = 0;
       double       vmax  = -1;
@@ -428,60 +427,10 @@ namespace fsgmpm
       return false;
     };
 
-    if (!std::isfinite(displacement_ratio)
-        || !std::isfinite(monitors.kinetic_energy)
-        || !std::isfinite(monitors.strain_energy))
-      return fail("a non-finite value appeared (velocity, stress or "
-                  "position)");
-    if (displacement_ratio > 1.)
-      return fail("a material point moved " + std::to_string(displacement_ratio)
-                  + " times its cell's smallest altitude in one step (it "
-                    "crossed more than one cell)");
-
-    // Energy balance: kinetic + strain energy can only come from the
-    // initial energy and the external work, less what damping removed
-    // (plastic, viscous and transfer dissipation only lower the left side).
-    // More means the step created energy: slow instabilities that the
-    // growth window misses (e.g. a no-slip geotube, growing for 15 s).
-    external_work_scale
-      = std::max(external_work_scale, std::abs(monitors.external_work));
-    const double stored  = monitors.kinetic_energy + monitors.strain_energy;
-    const double created = stored
-                           - (initial_energy + monitors.external_work
-                              - monitors.dissipated_energy);
-    const double scale = initial_energy + external_work_scale;
-    if (params.energy_creation_tolerance > 0 && scale > 0
-        && created > params.energy_creation_tolerance * scale)
-      return fail("the kinetic plus strain energy (" + std::to_string(stored)
-                  + " J) exceeds the initial energy plus the external work "
-                    "minus the damping work by "
-                  + std::to_string(created) + " J, more than "
-                  + std::to_string(params.energy_creation_tolerance)
-                  + " times the energy put in (" + std::to_string(scale)
-                  + " J): the step is creating energy (seen with a stiff body "
-                    "bouncing off a 'friction' wall; "
-                    "Stability/Energy creation tolerance = 0 disables this "
-                    "check)");
-
-    energy_history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
-                               monitors.external_work}});
-    if (energy_history.size() > params.ke_growth_window + 1)
-      energy_history.pop_front();
-    if (energy_history.size() == params.ke_growth_window + 1)
-      {
-        const auto  &old = energy_history.front();
-        const double available
-          = old[0] + std::max(0., monitors.external_work - old[1]);
-        if (monitors.kinetic_energy > params.ke_growth_factor * available
-            && monitors.kinetic_energy > 1e-200)
-          return fail("the kinetic energy grew to "
-                      + std::to_string(monitors.kinetic_energy)
-                      + " J, more than "
-                      + std::to_string(params.ke_growth_factor)
-                      + " times the energy available "
-                      + std::to_string(params.ke_growth_window)
-                      + " steps earlier plus the external work since");
-      }
+    const std::string what
+      = stability_guard.check(monitors, displacement_ratio);
+    if (!what.empty())
+      return fail(what);
     return true;
   }
 
@@ -501,7 +450,7 @@ namespace fsgmpm
 
     if (particles.size() == 0)
       {
-        termination = "error";
+        termination = Termination::error;
         diagnosis   = "no material point is left in the mesh (all "
                     + std::to_string(monitors.lost_particles)
                     + " left through its boundary) at step "
@@ -554,7 +503,7 @@ namespace fsgmpm
         dt = params.fixed_dt;
         if (dt > dt_stable / params.courant)
           {
-            termination = "unstable";
+            termination = Termination::unstable;
             diagnosis   = "Simulation/Fixed time step = " + format(dt)
                         + " s exceeds the explicit stability limit "
                         + format(dt_stable / params.courant) + " s at step "
@@ -569,7 +518,7 @@ namespace fsgmpm
       dt = params.end_time - time;
     if (!(dt > 0) || !std::isfinite(dt))
       {
-        termination = "unstable";
+        termination = Termination::unstable;
         diagnosis   = "the time step became " + format(dt) + " s at step "
                     + std::to_string(step) + ".";
         return false;
@@ -662,7 +611,7 @@ namespace fsgmpm
       });
     if (membrane_outside > 0)
       {
-        termination = "error";
+        termination = Termination::error;
         diagnosis   = std::to_string(membrane_outside)
                     + " membrane node(s) left the mesh at step "
                     + std::to_string(step)
@@ -740,19 +689,19 @@ namespace fsgmpm
                                  : 0;
     if (params.stop_when_at_rest && rest_steps >= params.convergence_window)
       {
-        termination = "at_rest";
+        termination = Termination::at_rest;
         return false;
       }
     if (params.stop_when_converged
         && converged_steps >= params.convergence_window)
       {
-        termination = "dr_converged";
+        termination = Termination::dr_converged;
         return false;
       }
     if (time >= params.end_time * (1 - 1e-14)
         || (params.max_steps > 0 && step >= params.max_steps))
       {
-        termination = "end_time";
+        termination = Termination::end_time;
         return false;
       }
     return true;
@@ -799,7 +748,7 @@ namespace fsgmpm
 
 
   template <int dim>
-  std::string
+  Termination
   Simulator<dim>::run()
   {
     namespace fs      = std::filesystem;
@@ -910,7 +859,8 @@ namespace fsgmpm
     while (running)
       {
         running = advance();
-        if (termination == "unstable" || termination == "error")
+        if (termination == Termination::unstable
+            || termination == Termination::error)
           break;
         if (step % params.monitor_every_steps == 0 || !running)
           write_monitor_row();
@@ -965,8 +915,8 @@ namespace fsgmpm
         + previous_wall_seconds;
     // The final state too, so that a finished run can be continued to a
     // later End time.
-    if (params.checkpoint_interval > 0 && termination != "unstable"
-        && termination != "error")
+    if (params.checkpoint_interval > 0 && termination != Termination::unstable
+        && termination != Termination::error)
       write_checkpoint(wall - previous_wall_seconds);
     monitor_file.reset();
     if (membrane)
@@ -981,7 +931,8 @@ namespace fsgmpm
                   << " particle-updates/s, " << monitors.lost_particles
                   << " lost particles; output in " << dir << "/" << std::endl;
       }
-    if (termination == "unstable" || termination == "error")
+    if (termination == Termination::unstable
+        || termination == Termination::error)
       std::cerr << "fsgmpm: " << diagnosis << std::endl;
     return termination;
   }
@@ -1010,7 +961,7 @@ namespace fsgmpm
          {"lost_particles", std::to_string(monitors.lost_particles)},
          {"dt_min", json_number(dt_min)},
          {"dt_max", json_number(dt_max)},
-         {"termination", json_string(termination)},
+         {"termination", json_string(to_string(termination))},
          {"diagnosis", json_string(diagnosis)},
          {"bytes_per_particle", json_number(particles.bytes_per_particle())},
          {"checkpoint_seconds", json_number(checkpoint_seconds)},

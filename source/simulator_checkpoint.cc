@@ -111,15 +111,10 @@ namespace fsgmpm
       out.put("run/energies",
               std::vector<double>{previous_kinetic_energy,
                                   initial_potential_energy,
-                                  max_kinetic_energy,
-                                  initial_energy,
-                                  external_work_scale});
+                                  max_kinetic_energy});
       out.put("run/counters",
               std::vector<unsigned int>{rest_steps, converged_steps});
-      std::vector<double> history;
-      for (const auto &h : energy_history)
-        history.insert(history.end(), h.begin(), h.end());
-      out.put("run/energy_history", history);
+      out.put("run/stability_guard", stability_guard.state());
 
       out.put("output/monitor_bytes", double(monitor_file->size()));
       out.put("output/next_output_time", next_output_time);
@@ -229,14 +224,9 @@ namespace fsgmpm
     previous_kinetic_energy        = e.at(0);
     initial_potential_energy       = e.at(1);
     max_kinetic_energy             = e.at(2);
-    initial_energy                 = e.at(3);
-    external_work_scale            = e.at(4);
     rest_steps                     = in.uints("run/counters").at(0);
     converged_steps                = in.uints("run/counters").at(1);
-    const auto &history            = in.doubles("run/energy_history");
-    energy_history.clear();
-    for (unsigned int k = 0; k + 1 < history.size(); k += 2)
-      energy_history.push_back({{history[k], history[k + 1]}});
+    stability_guard.set_state(in.doubles("run/stability_guard"));
 
     resume_monitor_bytes = in.scalar("output/monitor_bytes");
     next_output_time     = in.scalar("output/next_output_time");

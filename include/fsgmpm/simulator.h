@@ -11,6 +11,9 @@
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
+#include <fsgmpm/run/monitors.h>
+#include <fsgmpm/run/stability_guard.h>
+#include <fsgmpm/run/termination.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/step/material_options.h>
@@ -28,27 +31,6 @@ namespace fsgmpm
   class CheckpointWriter;
   class CheckpointReader;
 
-  /// Global quantities monitored every step (common columns of SPEC 6).
-  struct Monitors
-  {
-    double       kinetic_energy    = 0; ///< sum_p m_p |v_p|^2 / 2
-    double       strain_energy     = 0; ///< sum_p V_p w(sigma_p)
-    double       potential_energy  = 0; ///< -sum_p m_p g . x_p
-    double       external_work     = 0; ///< accumulated F_ext . du (Eq. 30)
-    double       dissipated_energy = 0; ///< removed by damping
-    double       dr_energy_ratio   = 0; ///< Eq. (30): E_kin / W_ext (nodal)
-    double       dr_force_ratio    = 0; ///< Eq. (30): |F_ext-F_int|/|F_ext|
-    unsigned int lost_particles    = 0;
-    /// sum_i m_i |v_i|^2 / 2 over the grid nodes (remapped velocities): the
-    /// motion the grid resolves. FLIP (Eq. 19) keeps point-velocity
-    /// fluctuations that the grid cannot see and that move nothing, so a
-    /// deposit at rest can hold most of kinetic_energy as such noise;
-    /// Termination = at_rest and Eq. (30) use this one.
-    double grid_kinetic_energy = 0;
-    /// Flagged (free-surface) points / points of detecting materials.
-    double free_surface_fraction = 0;
-  };
-
   /**
    * Owns the grid, the particles, the materials and the output, and runs the
    * explicit time loop of Stages. The constructor reads and validates the
@@ -64,7 +46,7 @@ namespace fsgmpm
 
     /// Run to the end (time, steps, convergence or instability) and write
     /// output. Returns the termination reason.
-    std::string
+    Termination
     run();
 
     /**
@@ -159,12 +141,12 @@ namespace fsgmpm
     {
       return dt;
     }
-    const std::string &
+    Termination
     get_termination() const
     {
       return termination;
     }
-    /// Diagnosis when termination == "unstable".
+    /// Diagnosis when the termination is unstable or error.
     const std::string &
     get_diagnosis() const
     {
@@ -252,16 +234,12 @@ namespace fsgmpm
     double       previous_kinetic_energy = 0;
     /// Potential energy above the mesh's lowest point at the start, and the
     /// largest kinetic energy so far (Termination = at_rest).
-    double       initial_potential_energy = 0, max_kinetic_energy = 0;
-    unsigned int rest_steps      = 0;
-    unsigned int converged_steps = 0;
-    std::string  termination     = "end_time";
-    std::string  diagnosis;
-    /// Kinetic plus strain energy at the start and the largest |external
-    /// work| so far (energy-creation guard).
-    double initial_energy = 0, external_work_scale = 0;
-    /// (kinetic+strain energy, external work) of the last window of steps.
-    std::deque<std::array<double, 2>> energy_history;
+    double         initial_potential_energy = 0, max_kinetic_energy = 0;
+    unsigned int   rest_steps      = 0;
+    unsigned int   converged_steps = 0;
+    Termination    termination     = Termination::running;
+    std::string    diagnosis;
+    StabilityGuard stability_guard;
 
     std::vector<double>          stage_seconds;
     std::unique_ptr<MonitorFile> monitor_file;

@@ -118,8 +118,10 @@ namespace
     fsgmpm::Simulator<dim> simulator(prm);
     if (!restart_directory.empty())
       simulator.restart(restart_directory);
-    const std::string termination = simulator.run();
-    return termination == "unstable" ? 3 : (termination == "error" ? 1 : 0);
+    const fsgmpm::Termination termination = simulator.run();
+    return termination == fsgmpm::Termination::unstable
+             ? 3
+             : (termination == fsgmpm::Termination::error ? 1 : 0);
   }
 } // namespace
 

@@ -66,7 +66,8 @@ end
   const double pe0 = sim.get_monitors().potential_energy;
   while (sim.advance())
     {}
-  ASSERT_EQ(sim.get_termination(), "at_rest") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::at_rest)
+    << sim.get_diagnosis();
   const auto m = sim.get_scene_monitors();
   std::cout << "[ measured ] at rest after " << sim.get_time() << " s ("
             << sim.get_step() << " steps): runout " << m[0]

@@ -95,7 +95,8 @@ namespace
           = std::max(max_drift,
                      std::abs(m.kinetic_energy + m.strain_energy - E0) / E0);
       }
-    ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     ASSERT_GE(crossings.size(), 9u);
     const double period = crossings[2] - crossings[0];
     std::cout << "[ measured ] " << dim << "D " << scheme << ", " << integration

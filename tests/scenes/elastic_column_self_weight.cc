@@ -54,7 +54,8 @@ end
     auto        &particles = sim.get_particles();
     while (sim.advance())
       {}
-    ASSERT_EQ(sim.get_termination(), "dr_converged") << sim.get_diagnosis();
+    ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::dr_converged)
+      << sim.get_diagnosis();
     const auto &m = sim.get_monitors();
     EXPECT_LE(m.dr_energy_ratio, 1e-3);
     EXPECT_LE(m.dr_force_ratio, 1e-3);

@@ -65,7 +65,7 @@ TEST(EnergyGuard, StopsASlowInstability)
   const auto sim = run(0.5, 1.01);
   std::cout << "[ measured ] stopped at step " << sim->get_step() << ": "
             << sim->get_diagnosis() << std::endl;
-  EXPECT_EQ(sim->get_termination(), "unstable");
+  EXPECT_EQ(sim->get_termination(), fsgmpm::Termination::unstable);
   EXPECT_NE(sim->get_diagnosis().find("creating energy"), std::string::npos);
   EXPECT_LT(sim->get_step(), 100u);
 }
@@ -74,12 +74,12 @@ TEST(EnergyGuard, GrowthWindowAloneMissesIt)
 {
   const auto sim = run(0, 1.01);
   EXPECT_EQ(sim->get_step(), 300u) << sim->get_diagnosis();
-  EXPECT_NE(sim->get_termination(), "unstable");
+  EXPECT_NE(sim->get_termination(), fsgmpm::Termination::unstable);
 }
 
 TEST(EnergyGuard, SilentWithoutThePump)
 {
   const auto sim = run(0.5, 1.0);
   EXPECT_EQ(sim->get_step(), 300u) << sim->get_diagnosis();
-  EXPECT_NE(sim->get_termination(), "unstable");
+  EXPECT_NE(sim->get_termination(), fsgmpm::Termination::unstable);
 }

@@ -89,7 +89,8 @@ end
     const double x0 = mean_x();
     while (sim.advance())
       ;
-    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     const double exact
       = 0.5 * (g * std::sin(theta) - friction * g * std::cos(theta)) * 0.01;
     std::cout << std::setprecision(6) << "[ measured ] block in field "
@@ -187,7 +188,8 @@ end
         = std::max(drift, (std::get<0>(momentum_and_velocities()) - p0).norm());
       max_overlap = std::max(max_overlap, overlap());
     }
-  EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   const auto [p_end, u_end, w_end, m_end] = momentum_and_velocities();
   const double e_end
     = sim.get_monitors().kinetic_energy + sim.get_monitors().strain_energy;

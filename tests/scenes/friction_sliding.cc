@@ -59,7 +59,8 @@ end
         }
       v_end = v;
     }
-  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   const double slope = (n * stv - st * sv) / (n * stt - st * st);
   std::cout << "[ measured ] deceleration " << -slope
             << " m/s^2 (mu g = " << mu * g << ", error "

@@ -100,7 +100,7 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
               && sim.get_time() >= times[velocity.size()] * (1 - 1e-12))
             velocity.emplace_back(sim.get_time(), m.at("container_velocity_y"));
         }
-      EXPECT_EQ(sim.get_termination(), "end_time")
+      EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
         << scene << ": " << sim.get_diagnosis();
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u) << scene;
       EXPECT_LE(max_outside, 2u) << scene;
@@ -214,7 +214,7 @@ TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
                 << "centre of mass rose " << water_rise << " m at 0.8 s "
                 << "(displaced volume: " << displaced_rise << " m)"
                 << std::endl;
-      EXPECT_EQ(sim.get_termination(), "end_time")
+      EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
         << e.scene << ": " << sim.get_diagnosis();
       EXPECT_NEAR(water_rise, displaced_rise, 0.001) << e.scene;
       EXPECT_NEAR(v_08, e.v_08, 0.05) << e.scene;

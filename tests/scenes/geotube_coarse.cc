@@ -130,8 +130,8 @@ namespace
             m[name] += value;
           ++samples;
         }
-    ASSERT_TRUE(sim.get_termination() == "end_time"
-                || sim.get_termination() == "dr_converged")
+    ASSERT_TRUE(sim.get_termination() == fsgmpm::Termination::end_time
+                || sim.get_termination() == fsgmpm::Termination::dr_converged)
       << sim.get_diagnosis();
     ASSERT_GT(samples, 10u);
     for (auto &[name, value] : m)
@@ -251,11 +251,11 @@ TEST(GeotubeCoarseValidation, ConvergesByEq30)
     ;
   std::printf("measured termination %s after %.2f s, Eq. (30) ratios %.2e / "
               "%.2e\n",
-              sim.get_termination().c_str(),
+              fsgmpm::to_string(sim.get_termination()).c_str(),
               sim.get_time(),
               sim.get_monitors().dr_energy_ratio,
               sim.get_monitors().dr_force_ratio);
-  EXPECT_EQ(sim.get_termination(), "dr_converged");
+  EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::dr_converged);
   const auto m   = monitors(sim);
   const auto ref = geotube_reference::solve(m.at("membrane_length"),
                                             m.at("enclosed_area"),

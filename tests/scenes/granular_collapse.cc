@@ -81,7 +81,7 @@ namespace
                 "(L - L0)/L0 = %.3f, Lube et al. %.3f (%+.0f%%), final "
                 "height %.4f m\n",
                 a,
-                sim.get_termination().c_str(),
+                fsgmpm::to_string(sim.get_termination()).c_str(),
                 sim.get_time(),
                 sim.get_step(),
                 runout,
@@ -105,7 +105,8 @@ TEST(GranularCollapse, ComesToRestWithTheRunoutOfLube)
         V0 += P.volume[p];
       const unsigned int n_points = P.size();
       const auto [measured, lube] = run(a, sim);
-      ASSERT_EQ(sim.get_termination(), "at_rest") << sim.get_diagnosis();
+      ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::at_rest)
+        << sim.get_diagnosis();
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u);
       ASSERT_EQ(P.size(), n_points);
       // Volume of the points and area under the deposit's profile.

@@ -72,8 +72,8 @@ namespace
     while (sim.advance())
       {}
     Result r;
-    r.converged        = sim.get_termination() == "dr_converged";
-    r.steps            = sim.get_step();
+    r.converged = sim.get_termination() == fsgmpm::Termination::dr_converged;
+    r.steps     = sim.get_step();
     const auto  &ps    = sim.get_particles();
     const double scale = rho * g * H;
     std::map<unsigned int, std::pair<double, unsigned int>> cell_error;

@@ -98,7 +98,8 @@ namespace
         previous      = q;
         previous_time = sim.get_time();
       }
-    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     Result r;
     r.crossings = crossings.size();
     r.steps     = sim.get_step();

@@ -58,7 +58,8 @@ end
   Simulator<2> sim(*prm);
   while (sim.advance())
     {}
-  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   EXPECT_EQ(sim.get_step(), 1000u);
   const auto                                   &ps = sim.get_particles();
   std::map<unsigned int, std::array<double, 3>> layers;
@@ -120,7 +121,8 @@ end
   Simulator<2> sim(*prm);
   while (sim.advance())
     {}
-  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   const auto &ps = sim.get_particles();
   // Per layer: sum of sigma_xx, sigma_yy, of the analytic sigma_yy at the
   // points' reference heights (the column settles by about 1 mm), count.

@@ -49,7 +49,7 @@ TEST(LostParticles, CountedExactly)
   const unsigned int n0 = sim.get_particles().size();
   while (sim.advance())
     {}
-  EXPECT_EQ(sim.get_termination(), "end_time");
+  EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time);
   std::cout << "[ measured ] lost " << sim.get_monitors().lost_particles
             << " of " << n0 << " points, expected " << expected << std::endl;
   EXPECT_GT(expected, 0u);
@@ -64,7 +64,7 @@ TEST(LostParticles, AllLostEndsWithError)
   const unsigned int n0 = sim.get_particles().size();
   while (sim.advance())
     {}
-  EXPECT_EQ(sim.get_termination(), "error");
+  EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::error);
   EXPECT_EQ(sim.get_monitors().lost_particles, n0);
   EXPECT_NE(sim.get_diagnosis().find("no material point"), std::string::npos);
 }

@@ -68,7 +68,8 @@ namespace
     const double initial_strain_energy = sim.get_monitors().strain_energy;
     while (sim.advance())
       ;
-    ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     const auto &membrane  = *sim.get_membrane();
     const auto &particles = sim.get_particles();
     const auto  m         = membrane_monitors(membrane, particles, 0.005, 0.1);

@@ -137,7 +137,8 @@ namespace
           r.peak_reaction
             = std::max(r.peak_reaction, base_reaction(sim, xa)[1] / scale);
         }
-      EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+      EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+        << sim.get_diagnosis();
       r.period = 2 * t_peak;
     }
     {
@@ -148,7 +149,8 @@ namespace
       const double       y_top0    = top_height(particles, n_top);
       while (sim.advance())
         {}
-      EXPECT_EQ(sim.get_termination(), "dr_converged") << sim.get_diagnosis();
+      EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::dr_converged)
+        << sim.get_diagnosis();
       r.static_top_displacement = y_top0 - top_height(particles, n_top);
       double xa;
       r.reaction_y     = base_reaction(sim, xa)[1] / scale;

@@ -76,7 +76,8 @@ TEST(RealWaterStiffness, HydrostaticColumnStaysAtRest)
   double       max_ke = 0;
   while (sim.advance())
     max_ke = std::max(max_ke, sim.get_monitors().kinetic_energy);
-  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   EXPECT_EQ(sim.get_step(), 3000u);
   const double max_error = max_pressure_error(sim.get_particles());
   ASSERT_TRUE(std::isfinite(max_error));
@@ -115,7 +116,8 @@ TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
                                std::abs(m.kinetic_energy + m.strain_energy
                                         - m.external_work - balance0));
     }
-  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   EXPECT_EQ(sim.get_step(), 3000u);
   const double max_error = max_pressure_error(ps);
   ASSERT_TRUE(std::isfinite(max_error));

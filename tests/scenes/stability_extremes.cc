@@ -104,7 +104,7 @@ namespace
               = std::max(out.relative_drift, std::abs(created) / scale);
           }
       }
-    out.termination = sim.get_termination();
+    out.termination = fsgmpm::to_string(sim.get_termination());
     out.diagnosis   = sim.get_diagnosis();
     out.steps       = sim.get_step();
     out.dt_min      = sim.get_dt();

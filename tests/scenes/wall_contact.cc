@@ -88,7 +88,8 @@ end
               << x_end - x0 << " m (- 0.05 m = " << std::scientific
               << x_end - x0 - 0.05 << " m)" << std::defaultfloat
               << std::setprecision(6) << std::endl;
-    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     return {x0, x_end};
   }
 
@@ -131,7 +132,8 @@ end
     e.max                = std::max(e.max, e.end);
     e.gravity_work       = pe0 - potential();
     e.end_kinetic_strain = e.end - potential();
-    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     std::cout << "[ measured ] block drop on '" << floor
               << "': total energy initial " << e.initial << " J/m, end "
               << e.end << " J/m (" << 100 * (e.end / e.initial - 1)
@@ -215,7 +217,8 @@ end
   const double x0 = mean_x();
   while (sim.advance())
     {}
-  ASSERT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+    << sim.get_diagnosis();
   const double distance = mean_x() - x0, reference = v0 * v0 / (2 * mu * g);
   std::cout << "[ measured ] stopping distance " << distance
             << " m (v0^2/(2 mu g) = " << reference << " m, error "

@@ -89,7 +89,8 @@ namespace
       if (sim.get_step() % 20 == 0)
         record();
     record();
-    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
 
     std::ifstream in(std::string(FSGMPM_TEST_SOURCE_DIR)
                      + "/reference/martin_moyce_1952_n2.csv");
@@ -198,7 +199,8 @@ TEST(WaterColumnCollapse, Gate)
                         << " m at t = " << sim.get_time();
           break;
         }
-    EXPECT_EQ(sim.get_termination(), "end_time") << sim.get_diagnosis();
+    EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+      << sim.get_diagnosis();
     std::cout << "[ measured ] gate at rest: front moved "
               << 1e3 * (sim.get_scene_monitors()[0] - front0) << " mm in 0.1 s"
               << std::endl;

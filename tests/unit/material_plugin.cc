@@ -134,7 +134,7 @@ end
       ;
     while (builtin.advance())
       ;
-    EXPECT_EQ(plugin.get_termination(), "end_time");
+    EXPECT_EQ(plugin.get_termination(), fsgmpm::Termination::end_time);
     EXPECT_GT(test_elastic_updates, 0u);
 
     const auto &a = plugin.get_particles();

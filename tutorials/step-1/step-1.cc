@@ -196,7 +196,7 @@ end
           }
     } while (simulator.advance());
 
-    AssertThrow(simulator.get_termination() == "end_time",
+    AssertThrow(simulator.get_termination() == fsgmpm::Termination::end_time,
                 ExcMessage("The run stopped early: "
                            + simulator.get_diagnosis()));
     std::cout << "Steps: " << simulator.get_step() << "\n";

@@ -419,10 +419,10 @@ end
         else
           break;
       }
-    AssertThrow(water.get_termination() == "end_time",
+    AssertThrow(water.get_termination() == fsgmpm::Termination::end_time,
                 ExcMessage("The water run stopped early: "
                            + water.get_diagnosis()));
-    AssertThrow(mud.get_termination() == "end_time",
+    AssertThrow(mud.get_termination() == fsgmpm::Termination::end_time,
                 ExcMessage("The mud run stopped early: "
                            + mud.get_diagnosis()));
     std::cout << "Steps: water " << water.get_step() << ", mud "

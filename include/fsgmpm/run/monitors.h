@@ -1,0 +1,28 @@
+#ifndef fsgmpm_run_monitors_h
+#define fsgmpm_run_monitors_h
+
+namespace fsgmpm
+{
+  /// Global quantities monitored every step (common columns of SPEC 6).
+  struct Monitors
+  {
+    double       kinetic_energy    = 0; ///< sum_p m_p |v_p|^2 / 2
+    double       strain_energy     = 0; ///< sum_p V_p w(sigma_p)
+    double       potential_energy  = 0; ///< -sum_p m_p g . x_p
+    double       external_work     = 0; ///< accumulated F_ext . du (Eq. 30)
+    double       dissipated_energy = 0; ///< removed by damping
+    double       dr_energy_ratio   = 0; ///< Eq. (30): E_kin / W_ext (nodal)
+    double       dr_force_ratio    = 0; ///< Eq. (30): |F_ext-F_int|/|F_ext|
+    unsigned int lost_particles    = 0;
+    /// sum_i m_i |v_i|^2 / 2 over the grid nodes (remapped velocities): the
+    /// motion the grid resolves. FLIP (Eq. 19) keeps point-velocity
+    /// fluctuations that the grid cannot see and that move nothing, so a
+    /// deposit at rest can hold most of kinetic_energy as such noise;
+    /// Termination = at_rest and Eq. (30) use this one.
+    double grid_kinetic_energy = 0;
+    /// Flagged (free-surface) points / points of detecting materials.
+    double free_surface_fraction = 0;
+  };
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,108 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/run/stability_guard.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  StabilityGuard::StabilityGuard(const Settings &settings)
+    : settings(settings)
+  {}
+
+
+
+  void
+  StabilityGuard::reset(const Monitors &monitors)
+  {
+    history.clear();
+    history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
+                        monitors.external_work}});
+    initial_energy      = monitors.kinetic_energy + monitors.strain_energy;
+    external_work_scale = std::abs(monitors.external_work);
+  }
+
+
+
+  std::string
+  StabilityGuard::check(const Monitors &monitors,
+                        const double    displacement_ratio)
+  {
+    if (!std::isfinite(displacement_ratio)
+        || !std::isfinite(monitors.kinetic_energy)
+        || !std::isfinite(monitors.strain_energy))
+      return "a non-finite value appeared (velocity, stress or position)";
+    if (displacement_ratio > 1.)
+      return "a material point moved " + std::to_string(displacement_ratio)
+             + " times its cell's smallest altitude in one step (it crossed "
+               "more than one cell)";
+
+    // Energy balance: kinetic + strain energy can only come from the
+    // initial energy and the external work, less what damping removed
+    // (plastic, viscous and transfer dissipation only lower the left side).
+    // More means the step created energy.
+    external_work_scale
+      = std::max(external_work_scale, std::abs(monitors.external_work));
+    const double stored  = monitors.kinetic_energy + monitors.strain_energy;
+    const double created = stored
+                           - (initial_energy + monitors.external_work
+                              - monitors.dissipated_energy);
+    const double scale = initial_energy + external_work_scale;
+    if (settings.energy_creation_tolerance > 0 && scale > 0
+        && created > settings.energy_creation_tolerance * scale)
+      return "the kinetic plus strain energy (" + std::to_string(stored)
+             + " J) exceeds the initial energy plus the external work minus "
+               "the damping work by "
+             + std::to_string(created) + " J, more than "
+             + std::to_string(settings.energy_creation_tolerance)
+             + " times the energy put in (" + std::to_string(scale)
+             + " J): the step is creating energy (seen with a stiff body "
+               "bouncing off a 'friction' wall; Stability/Energy creation "
+               "tolerance = 0 disables this check)";
+
+    history.push_back({{stored, monitors.external_work}});
+    if (history.size() > settings.growth_window + 1)
+      history.pop_front();
+    if (history.size() == settings.growth_window + 1)
+      {
+        const auto  &old = history.front();
+        const double available
+          = old[0] + std::max(0., monitors.external_work - old[1]);
+        if (monitors.kinetic_energy > settings.growth_factor * available
+            && monitors.kinetic_energy > 1e-200)
+          return "the kinetic energy grew to "
+                 + std::to_string(monitors.kinetic_energy) + " J, more than "
+                 + std::to_string(settings.growth_factor)
+                 + " times the energy available "
+                 + std::to_string(settings.growth_window)
+                 + " steps earlier plus the external work since";
+      }
+    return "";
+  }
+
+
+
+  std::vector<double>
+  StabilityGuard::state() const
+  {
+    std::vector<double> s = {initial_energy, external_work_scale};
+    for (const auto &h : history)
+      s.insert(s.end(), h.begin(), h.end());
+    return s;
+  }
+
+
+
+  void
+  StabilityGuard::set_state(const std::vector<double> &s)
+  {
+    AssertThrow(s.size() >= 2 && s.size() % 2 == 0,
+                dealii::ExcMessage("The checkpoint's stability-guard state "
+                                   "is damaged."));
+    initial_energy      = s[0];
+    external_work_scale = s[1];
+    history.clear();
+    for (unsigned int k = 2; k < s.size(); k += 2)
+      history.push_back({{s[k], s[k + 1]}});
+  }
+} // namespace fsgmpm
