@@ -800,20 +800,11 @@ namespace fsgmpm
                                                 resume_monitor_bytes)
                 : std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
     auto write_monitor_row = [&] {
-      std::vector<double> row = {time,
-                                 double(step),
-                                 dt,
-                                 monitors.kinetic_energy,
-                                 monitors.strain_energy,
-                                 monitors.potential_energy,
-                                 monitors.external_work,
-                                 monitors.dissipated_energy,
-                                 monitors.dr_energy_ratio,
-                                 monitors.dr_force_ratio,
-                                 double(monitors.lost_particles),
-                                 monitors.grid_kinetic_energy};
-      if (detecting)
-        row.push_back(monitors.free_surface_fraction);
+      // The common columns; the free-surface fraction (the last value)
+      // only where a body detects free surfaces.
+      const auto          values = monitors.values();
+      std::vector<double> row    = {time, double(step), dt};
+      row.insert(row.end(), values.begin(), values.end() - (detecting ? 0 : 1));
       for (const double v : scene_monitors->evaluate(particles, membrane.get()))
         row.push_back(v);
       monitor_file->write_row(row);

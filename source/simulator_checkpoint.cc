@@ -95,17 +95,8 @@ namespace fsgmpm
       out.put("run/time", time);
       out.put("run/dt", std::vector<double>{dt, dt_min, dt_max});
       out.put("run/step", std::vector<unsigned int>{step});
-      out.put("run/monitors",
-              std::vector<double>{monitors.kinetic_energy,
-                                  monitors.strain_energy,
-                                  monitors.potential_energy,
-                                  monitors.external_work,
-                                  monitors.dissipated_energy,
-                                  monitors.dr_energy_ratio,
-                                  monitors.dr_force_ratio,
-                                  double(monitors.lost_particles),
-                                  monitors.grid_kinetic_energy,
-                                  monitors.free_surface_fraction});
+      const auto m = monitors.values();
+      out.put("run/monitors", std::vector<double>(m.begin(), m.end()));
       // Dynamic relaxation, the rest and convergence counters and the
       // stability guard's energy history.
       out.put("run/energies",
@@ -203,29 +194,24 @@ namespace fsgmpm
     AssertThrow(in.has("membrane/position") == bool(membrane),
                 ExcMessage("The checkpoint's scene and this one differ in "
                            "having a membrane."));
-    time                           = in.scalar("run/time");
-    const auto &dts                = in.doubles("run/dt");
-    dt                             = dts.at(0);
-    dt_min                         = dts.at(1);
-    dt_max                         = dts.at(2);
-    step                           = in.uints("run/step").at(0);
-    const auto &m                  = in.doubles("run/monitors");
-    monitors.kinetic_energy        = m.at(0);
-    monitors.strain_energy         = m.at(1);
-    monitors.potential_energy      = m.at(2);
-    monitors.external_work         = m.at(3);
-    monitors.dissipated_energy     = m.at(4);
-    monitors.dr_energy_ratio       = m.at(5);
-    monitors.dr_force_ratio        = m.at(6);
-    monitors.lost_particles        = static_cast<unsigned int>(m.at(7));
-    monitors.grid_kinetic_energy   = m.at(8);
-    monitors.free_surface_fraction = m.at(9);
-    const auto &e                  = in.doubles("run/energies");
-    previous_kinetic_energy        = e.at(0);
-    initial_potential_energy       = e.at(1);
-    max_kinetic_energy             = e.at(2);
-    rest_steps                     = in.uints("run/counters").at(0);
-    converged_steps                = in.uints("run/counters").at(1);
+    time            = in.scalar("run/time");
+    const auto &dts = in.doubles("run/dt");
+    dt              = dts.at(0);
+    dt_min          = dts.at(1);
+    dt_max          = dts.at(2);
+    step            = in.uints("run/step").at(0);
+    const auto &m   = in.doubles("run/monitors");
+    AssertThrow(m.size() == Monitors::n_values,
+                ExcMessage("The checkpoint's monitors are damaged."));
+    std::array<double, Monitors::n_values> values;
+    std::copy(m.begin(), m.end(), values.begin());
+    monitors.set_values(values);
+    const auto &e            = in.doubles("run/energies");
+    previous_kinetic_energy  = e.at(0);
+    initial_potential_energy = e.at(1);
+    max_kinetic_energy       = e.at(2);
+    rest_steps               = in.uints("run/counters").at(0);
+    converged_steps          = in.uints("run/counters").at(1);
     stability_guard.set_state(in.doubles("run/stability_guard"));
 
     resume_monitor_bytes = in.scalar("output/monitor_bytes");

@@ -17,7 +17,6 @@
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>
 
-#include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
 #include <filesystem>
@@ -76,13 +75,7 @@ namespace
   void
   print_parameter_manual(const ParameterHandler &prm, std::ostream &out)
   {
-    std::stringstream json;
-    prm.print_parameters(json,
-                         ParameterHandler::OutputStyle(
-                           ParameterHandler::JSON
-                           | ParameterHandler::KeepDeclarationOrder));
-    boost::property_tree::ptree tree;
-    boost::property_tree::read_json(json, tree);
+    const boost::property_tree::ptree tree = fsgmpm::parameter_tree(prm);
     std::function<void(const boost::property_tree::ptree &, unsigned int)> print
       = [&](const boost::property_tree::ptree &node, unsigned int depth) {
           const std::string indent(2 * depth, ' ');

@@ -76,8 +76,8 @@ namespace fsgmpm
 
 
 
-  std::vector<std::pair<std::string, std::string>>
-  parameter_values(const ParameterHandler &prm)
+  boost::property_tree::ptree
+  parameter_tree(const ParameterHandler &prm)
   {
     std::stringstream json;
     prm.print_parameters(json,
@@ -86,6 +86,15 @@ namespace fsgmpm
                            | ParameterHandler::KeepDeclarationOrder));
     boost::property_tree::ptree tree;
     boost::property_tree::read_json(json, tree);
+    return tree;
+  }
+
+
+
+  std::vector<std::pair<std::string, std::string>>
+  parameter_values(const ParameterHandler &prm)
+  {
+    const auto                                       tree = parameter_tree(prm);
     std::vector<std::pair<std::string, std::string>> values;
     std::function<void(const boost::property_tree::ptree &,
                        const std::string &)>

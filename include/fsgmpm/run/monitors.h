@@ -1,6 +1,8 @@
 #ifndef fsgmpm_run_monitors_h
 #define fsgmpm_run_monitors_h
 
+#include <array>
+
 namespace fsgmpm
 {
   /// Global quantities monitored every step (common columns of SPEC 6).
@@ -22,6 +24,42 @@ namespace fsgmpm
     double grid_kinetic_energy = 0;
     /// Flagged (free-surface) points / points of detecting materials.
     double free_surface_fraction = 0;
+
+    static constexpr unsigned int n_values = 10;
+
+    /// The values in the order of monitors.csv's columns (kinetic_energy
+    /// ... grid_kinetic_energy, free_surface_fraction), for output and
+    /// checkpoints.
+    std::array<double, n_values>
+    values() const
+    {
+      return {{kinetic_energy,
+               strain_energy,
+               potential_energy,
+               external_work,
+               dissipated_energy,
+               dr_energy_ratio,
+               dr_force_ratio,
+               double(lost_particles),
+               grid_kinetic_energy,
+               free_surface_fraction}};
+    }
+
+    /// The inverse of values().
+    void
+    set_values(const std::array<double, n_values> &v)
+    {
+      kinetic_energy        = v[0];
+      strain_energy         = v[1];
+      potential_energy      = v[2];
+      external_work         = v[3];
+      dissipated_energy     = v[4];
+      dr_energy_ratio       = v[5];
+      dr_force_ratio        = v[6];
+      lost_particles        = static_cast<unsigned int>(v[7]);
+      grid_kinetic_energy   = v[8];
+      free_surface_fraction = v[9];
+    }
   };
 } // namespace fsgmpm
 

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <boost/property_tree/ptree.hpp>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +26,11 @@ namespace fsgmpm
   /// space, "_27" for an apostrophe, ...).
   std::string
   demangle_parameter_name(const std::string &name);
+
+  /// Every parameter of @p prm as a tree (ParameterHandler's JSON, in
+  /// declaration order; names mangled, see demangle_parameter_name()).
+  boost::property_tree::ptree
+  parameter_tree(const dealii::ParameterHandler &prm);
 
   /**
    * Every parameter of @p prm with its current value, as ("Section/Sub/Name",
