@@ -130,6 +130,22 @@ namespace fsgmpm
         StateCheckpoint::save(out, *membrane);
       file_name = out.commit();
     }
+    // Read it back before older ones go: HDF5 may report a failed write
+    // (a full disk) only as a file that does not read back.
+    try
+      {
+        CheckpointReader verify(file_name);
+      }
+    catch (const ExceptionBase &e)
+      {
+        fs::remove(file_name);
+        AssertThrow(false,
+                    ExcMessage("Writing the checkpoint <" + file_name
+                               + "> failed: it does not read back ("
+                               + message_of(e)
+                               + "). Is the disk full? The previous "
+                                 "checkpoints are kept."));
+      }
     // Keep the newest two.
     const auto files = checkpoint_files(directory);
     for (unsigned int k = 2; k < files.size(); ++k)

@@ -19,8 +19,14 @@ namespace fsgmpm
                   dealii::ExcMessage("Cannot write the file <" + tmp + ">."));
       write(out);
       out.flush();
-      AssertThrow(out.good(),
-                  dealii::ExcMessage("Writing <" + tmp + "> failed."));
+      if (!out.good())
+        {
+          out.close();
+          std::remove(tmp.c_str());
+          AssertThrow(false,
+                      dealii::ExcMessage("Writing <" + file_name
+                                         + "> failed (is the disk full?)."));
+        }
     }
     AssertThrow(std::rename(tmp.c_str(), file_name.c_str()) == 0,
                 dealii::ExcMessage("Cannot rename <" + tmp + "> to <"

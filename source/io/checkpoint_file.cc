@@ -1,5 +1,7 @@
 #include <deal.II/base/hdf5.h>
 
+#include <fsgmpm/io/hdf5_setup.h>
+
 #include <fsgmpm/io/checkpoint_file.h>
 
 #include <cstdio>
@@ -67,19 +69,26 @@ namespace fsgmpm
       return name;
     }
 
-    /// deal.II's HDF5 wrappers do not throw when HDF5 fails to create or
-    /// write a dataset; HDF5's error stack tells.
+    /// Write a dataset; false if HDF5 failed. deal.II's HDF5 wrappers do
+    /// not throw when HDF5 fails to create or write a dataset (HDF5's error
+    /// stack tells), and an HDF5::File destroyed while an exception is in
+    /// flight aborts the program: so this reports, and the caller closes
+    /// the file before it throws.
     template <typename Container>
-    void
-    write_checked(HDF5::File        &file,
-                  const std::string &name,
-                  const Container   &data,
-                  const std::string &file_name)
+    bool
+    write_dataset_checked(HDF5::File        &file,
+                          const std::string &name,
+                          const Container   &data)
     {
-      file.write_dataset(dataset_name(name), data);
-      AssertThrow(H5Eget_num(H5E_DEFAULT) == 0,
-                  ExcMessage("Writing <" + name + "> to the checkpoint <"
-                             + file_name + "> failed (disk full?)."));
+      try
+        {
+          file.write_dataset(name, data);
+        }
+      catch (...)
+        {
+          return false;
+        }
+      return H5Eget_num(H5E_DEFAULT) == 0;
     }
   } // namespace
 
@@ -90,7 +99,7 @@ namespace fsgmpm
     , tmp_name(stem + ".h5.tmp")
   {
     std::filesystem::remove(tmp_name);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    prepare_hdf5();
     try
       {
         file = std::make_unique<HDF5::File>(tmp_name,
@@ -119,6 +128,26 @@ namespace fsgmpm
 
 
 
+  template <typename Container>
+  void
+  CheckpointWriter::write_or_fail(const std::string &name,
+                                  const Container   &data)
+  {
+    if (write_dataset_checked(*file, dataset_name(name), data))
+      return;
+    // Close and remove the partial file before throwing (see above).
+    file.reset();
+    std::error_code ignored;
+    std::filesystem::remove(tmp_name, ignored);
+    AssertThrow(false,
+                ExcMessage("Writing <" + name + "> to the checkpoint <"
+                           + tmp_name
+                           + "> failed (is the disk full?). The previous "
+                             "checkpoints are kept."));
+  }
+
+
+
   void
   CheckpointWriter::put(const std::string         &name,
                         const std::vector<double> &data)
@@ -126,7 +155,7 @@ namespace fsgmpm
     entries += "d " + name + " " + std::to_string(data.size()) + "\n";
     // HDF5 datasets cannot be empty: an empty array is only listed.
     if (!data.empty())
-      write_checked(*file, name, data, tmp_name);
+      write_or_fail(name, data);
   }
 
 
@@ -137,7 +166,7 @@ namespace fsgmpm
   {
     entries += "u " + name + " " + std::to_string(data.size()) + "\n";
     if (!data.empty())
-      write_checked(*file, name, data, tmp_name);
+      write_or_fail(name, data);
   }
 
 
@@ -147,7 +176,7 @@ namespace fsgmpm
   {
     entries += "s " + name + " " + std::to_string(text.size()) + "\n";
     if (!text.empty())
-      write_checked(*file, name, bytes_of(text), tmp_name);
+      write_or_fail(name, bytes_of(text));
   }
 
 
@@ -155,7 +184,7 @@ namespace fsgmpm
   std::string
   CheckpointWriter::commit()
   {
-    write_checked(*file, "checkpoint_entries", bytes_of(entries), tmp_name);
+    write_or_fail("checkpoint_entries", bytes_of(entries));
     file.reset(); // H5Fclose: everything is in the file
     // The hash of the file's bytes goes into its name, so that a reader
     // checks the file before HDF5 parses it (deal.II's HDF5 wrappers do not
@@ -189,11 +218,18 @@ namespace fsgmpm
 
     // HDF5 would print its error stack for an unreadable file; the message
     // below says what matters.
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    prepare_hdf5();
+    // The file lives outside the try: an HDF5::File destroyed while an
+    // exception is in flight aborts the program.
+    std::unique_ptr<HDF5::File> file_pointer;
+    bool                        readable = true;
     try
       {
-        HDF5::File file(file_name, HDF5::File::FileAccessMode::open);
-        const auto list_bytes = file.open_dataset("checkpoint_entries")
+        file_pointer
+          = std::make_unique<HDF5::File>(file_name,
+                                         HDF5::File::FileAccessMode::open);
+        HDF5::File &file       = *file_pointer;
+        const auto  list_bytes = file.open_dataset("checkpoint_entries")
                                   .read<std::vector<unsigned int>>();
         std::istringstream list(
           std::string(list_bytes.begin(), list_bytes.end()));
@@ -228,10 +264,12 @@ namespace fsgmpm
       }
     catch (...)
       {
-        AssertThrow(false,
-                    ExcMessage("Cannot read the checkpoint <" + file_name
-                               + ">: HDF5 cannot read it back."));
+        readable = false;
       }
+    file_pointer.reset();
+    AssertThrow(readable,
+                ExcMessage("Cannot read the checkpoint <" + file_name
+                           + ">: HDF5 cannot read it back."));
   }
 
 

@@ -1,12 +1,15 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/hdf5.h>
 
+#include <fsgmpm/io/hdf5_setup.h>
+
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/xdmf_series.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace fsgmpm
@@ -32,25 +35,29 @@ namespace fsgmpm
       return name.str();
     }
 
-    /// A dataset of @p rows x @p columns values (deal.II's wrappers do not
-    /// throw when HDF5 fails; HDF5's error stack tells).
+    /// A dataset of @p rows x @p columns values; false if HDF5 failed
+    /// (deal.II's wrappers do not throw then; HDF5's error stack tells).
     template <typename Number>
-    void
+    bool
     write_table(HDF5::File                &file,
                 const std::string         &name,
                 const std::vector<Number> &values,
-                const unsigned int         columns,
-                const std::string         &path)
+                const unsigned int         columns)
     {
-      const hsize_t rows    = values.size() / columns;
-      auto          dataset = file.create_dataset<Number>(
-        name,
-        columns == 1 ? std::vector<hsize_t>{rows}
-                              : std::vector<hsize_t>{rows, hsize_t(columns)});
-      dataset.write(values);
-      AssertThrow(H5Eget_num(H5E_DEFAULT) == 0,
-                  ExcMessage("Writing <" + name + "> to <" + path
-                             + "> failed (disk full?)."));
+      const hsize_t rows = values.size() / columns;
+      try
+        {
+          auto dataset = file.create_dataset<Number>(
+            name,
+            columns == 1 ? std::vector<hsize_t>{rows}
+                         : std::vector<hsize_t>{rows, hsize_t(columns)});
+          dataset.write(values);
+        }
+      catch (...)
+        {
+          return false;
+        }
+      return H5Eget_num(H5E_DEFAULT) == 0;
     }
   } // namespace
 
@@ -84,18 +91,26 @@ namespace fsgmpm
     const std::string name = file_name(base_name, steps.size());
     const std::string path = directory + "/" + name;
     const std::string tmp  = path + ".tmp";
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    prepare_hdf5();
+    for (const auto &f : fields)
+      AssertThrow(f.values.size()
+                    == f.n_components * (f.on_cells ? n_cells : n_nodes),
+                  ExcInternalError());
     {
-      HDF5::File file(tmp, HDF5::File::FileAccessMode::create);
-      write_table(file, "nodes", positions, 3, tmp);
-      write_table(file, "cells", cells, nodes_per_cell(type), tmp);
+      // An HDF5::File destroyed while an exception is in flight aborts the
+      // program: write, close, then report.
+      auto file
+        = std::make_unique<HDF5::File>(tmp, HDF5::File::FileAccessMode::create);
+      bool ok = write_table(*file, "nodes", positions, 3)
+                && write_table(*file, "cells", cells, nodes_per_cell(type));
       for (const auto &f : fields)
-        {
-          AssertThrow(f.values.size()
-                        == f.n_components * (f.on_cells ? n_cells : n_nodes),
-                      ExcInternalError());
-          write_table(file, f.name, f.values, f.n_components, tmp);
-        }
+        ok = ok && write_table(*file, f.name, f.values, f.n_components);
+      file.reset();
+      if (!ok)
+        std::remove(tmp.c_str());
+      AssertThrow(ok,
+                  ExcMessage("Writing <" + path
+                             + "> failed (is the disk full?)."));
     }
     AssertThrow(std::rename(tmp.c_str(), path.c_str()) == 0,
                 ExcMessage("Cannot rename <" + tmp + "> to <" + path + ">."));

@@ -13,7 +13,7 @@ set -u
 exe=$(realpath "$1")
 src=$(realpath "$2")
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+trap 'umount "$work/tiny" 2>/dev/null; rm -rf "$work"' EXIT
 cd "$work"
 passed=0
 failed=0
@@ -107,6 +107,30 @@ check "at the end time already: says to raise it" grep -q "raise them to continu
 # A finished run continues to a later end time from its final checkpoint.
 "$exe" "${scene[@]}" --set "Simulation/End time=0.1" --restart dam_break.full >/dev/null
 check "a finished run continues to a later end time" grep -q '"termination": "end_time"' dam_break.full/summary.json
+
+# A full disk (a 6 MB tmpfs; skipped where mounting is not permitted): the
+# checkpoint that does not fit, and HDF5 output that does not fit, stop
+# the run with a message and exit status 1, never a crash, and leave no
+# temporary file; the checkpoint before it stays.
+mkdir tiny
+if mount -t tmpfs -o size=6M tmpfs tiny 2>/dev/null; then
+  full=("$src/prm/geocontainer_polygon.prm" --set "Output/Quiet=true" --set "Output/Output interval=0")
+  "$exe" "${full[@]}" --set "Simulation/End time=0.002" --set "Output/Checkpoint interval=0.001" \
+    --set "Output/Directory=tiny/c" >/dev/null 2>tiny.err
+  check "disk full while checkpointing: exit 1" test $? -eq 1
+  check "disk full while checkpointing: says so" grep -q "is the disk full" tiny.err
+  check "disk full while checkpointing: the checkpoint before stays" test "$(n_checkpoints tiny/c)" -eq 1
+  check "disk full while checkpointing: no temporary file" test -z "$(ls tiny/c/checkpoints | grep tmp)"
+  rm -rf tiny/c
+  "$exe" "${full[@]}" --set "Simulation/End time=0.01" --set "Output/Format=hdf5" \
+    --set "Output/Output interval=0.001" --set "Output/Directory=tiny/h" >/dev/null 2>tiny.err
+  check "disk full while writing HDF5: exit 1" test $? -eq 1
+  check "disk full while writing HDF5: says so" grep -q "is the disk full" tiny.err
+  check "disk full while writing HDF5: no temporary file" test -z "$(ls tiny/h | grep tmp)"
+  umount tiny
+else
+  echo "skip a full disk (cannot mount a tmpfs here)"
+fi
 
 echo "checkpoint restart: $passed passed, $failed failed"
 [ $failed -eq 0 ]

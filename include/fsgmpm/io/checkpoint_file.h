@@ -71,6 +71,11 @@ namespace fsgmpm
     commit();
 
   private:
+    /// Write a dataset, or close and remove the file and throw.
+    template <typename Container>
+    void
+    write_or_fail(const std::string &name, const Container &data);
+
     std::string                         stem, tmp_name;
     std::unique_ptr<dealii::HDF5::File> file;
     std::string                         entries;
