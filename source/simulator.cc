@@ -2,12 +2,10 @@
 
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/io/atomic_file.h>
-#include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/io/grid_output.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
-#include <fsgmpm/io/state_checkpoint.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/particles/point_locator.h>

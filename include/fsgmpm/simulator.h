@@ -20,7 +20,6 @@
 #include <fsgmpm/step/smoothing_fields.h>
 
 #include <array>
-#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
