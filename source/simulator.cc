@@ -353,8 +353,8 @@ namespace fsgmpm
           {
             const unsigned int c = cells[i];
             double             k = 0, s = 0, g = 0;
-            for (unsigned int p = particles.cell_start[c];
-                 p < particles.cell_start[c + 1];
+            for (unsigned int p = particles.cell_begin[c];
+                 p < particles.cell_end[c];
                  ++p)
               {
                 k += 0.5 * particles.mass[p]

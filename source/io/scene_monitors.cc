@@ -198,7 +198,9 @@ namespace fsgmpm
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
         const double half_spacing
-          = 0.5 * std::pow(particles.volume[p], 1. / dim);
+          = 0.5
+            * (dim == 2 ? std::sqrt(particles.volume[p])
+                        : std::cbrt(particles.volume[p]));
         const double x = particles.position[p][0] - wall_x;
         const double y = particles.position[p][1] - base_y;
         // A point resting on the base makes the deposit one spacing thick.

@@ -129,9 +129,18 @@ namespace fsgmpm
         double p = pressure(kin[i].volume_ratio);
         if (!allow_tension)
           p = std::max(p, 0.);
-        // Eq. (13): sigma = -p I + 2 mu dev(d).
-        stress[i] = 2. * mu * deviator(kin[i].strain_rate)
-                    - p * unit_symmetric_tensor<3>();
+        // Eq. (13): sigma = -p I + 2 mu dev(d), written out component by
+        // component (the same operations as deviator(), cheaper).
+        const SymmetricTensor<2, 3> &d      = kin[i].strain_rate;
+        const double                 two_mu = 2. * mu;
+        const double                 mean   = trace(d) / 3;
+        SymmetricTensor<2, 3>       &s      = stress[i];
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            s[a][a] = two_mu * (d[a][a] - mean) - p;
+            for (unsigned int b = a + 1; b < 3; ++b)
+              s[a][b] = two_mu * d[a][b];
+          }
       }
   }
 

@@ -1,5 +1,6 @@
 #include <fsgmpm/particles/particle_store.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace fsgmpm
@@ -61,27 +62,42 @@ namespace fsgmpm
   ParticleStore<dim>::sort_by_cell(const unsigned int n_cells)
   {
     const unsigned int n = size();
-    cell_start.assign(n_cells + 1, 0);
-    for (unsigned int p = 0; p < n; ++p)
-      ++cell_start[cell[p] + 1];
-    bool sorted = true;
-    for (unsigned int p = 1; p < n && sorted; ++p)
-      sorted = cell[p - 1] <= cell[p];
-    for (unsigned int c = 0; c < n_cells; ++c)
-      cell_start[c + 1] += cell_start[c];
-
+    if (cell_begin.size() != n_cells)
+      {
+        cell_begin.assign(n_cells, 0);
+        cell_end.assign(n_cells, 0);
+        occupied_cells.clear();
+      }
+    // Empty the cells of the last sort, then count into cell_end and list
+    // the occupied cells as they are met.
+    for (const unsigned int c : occupied_cells)
+      cell_begin[c] = cell_end[c] = 0;
     occupied_cells.clear();
-    for (unsigned int c = 0; c < n_cells; ++c)
-      if (cell_start[c + 1] > cell_start[c])
-        occupied_cells.push_back(c);
-
+    bool sorted = true;
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        if (cell_end[cell[p]]++ == 0)
+          occupied_cells.push_back(cell[p]);
+        sorted = sorted && (p == 0 || cell[p - 1] <= cell[p]);
+      }
+    // Met in point order: ascending already when the points are sorted.
+    if (!sorted)
+      std::sort(occupied_cells.begin(), occupied_cells.end());
+    unsigned int start = 0;
+    for (const unsigned int c : occupied_cells)
+      {
+        cell_begin[c] = start;
+        start += cell_end[c];
+        cell_end[c] = sorted ? start : cell_begin[c];
+      }
     if (sorted)
       return;
 
+    // Counting sort into the occupied cells; cell_end runs from cell_begin
+    // to its final value.
     order_scratch.resize(n);
-    std::vector<unsigned int> next(cell_start.begin(), cell_start.end() - 1);
     for (unsigned int p = 0; p < n; ++p)
-      order_scratch[next[cell[p]]++] = p;
+      order_scratch[cell_end[cell[p]]++] = p;
 
     permute(position, order_scratch);
     permute(velocity, order_scratch);

@@ -35,8 +35,8 @@ namespace fsgmpm
           c,
           [&](const unsigned int p) { return !particles.free_surface[p]; },
           scale);
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           {
             const unsigned int m = particles.material_id[p];
@@ -53,33 +53,44 @@ namespace fsgmpm
       });
 
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        // Without interpolation p_bar is the cell's, per material: computed
+        // once per run of points of the same material.
+        unsigned int run_material = numbers::invalid_unsigned_int;
+        double       p_bar        = 0;
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           {
             const unsigned int m = particles.material_id[p];
             if (!options[m].anp || particles.free_surface[p])
               continue;
-            double p_bar = 0;
             if (options[m].anp_interpolate)
               {
                 const auto lambda = grid.barycentric(c, particles.position[p]);
+                p_bar             = 0;
                 for (unsigned int k = 0; k < dim + 1; ++k)
                   p_bar
                     += lambda[k] * smoothing.average(m, grid.cell_nodes[c][k]);
               }
-            else
+            else if (m != run_material)
               {
+                p_bar = 0;
                 for (const unsigned int i : grid.cell_nodes[c])
                   p_bar += smoothing.average(m, i);
                 p_bar /= (dim + 1);
+                run_material = m;
               }
-            // Eq. (28): deviatoric part kept, spherical part averaged.
-            particles.stress[p] = deviator(particles.stress[p])
-                                  - p_bar * unit_symmetric_tensor<3>();
+            // Eq. (28): deviatoric part kept, spherical part averaged
+            // (sigma <- dev(sigma) - p_bar I, on the diagonal only).
+            SymmetricTensor<2, 3> &s    = particles.stress[p];
+            const double           mean = trace(s) / 3;
+            for (unsigned int d = 0; d < 3; ++d)
+              s[d][d] = (s[d][d] - mean) - p_bar;
           }
       });
     }
+
+
 
     template void
     average_nodal_pressure<2>(const BackgroundGrid<2> &,

@@ -49,7 +49,7 @@ namespace fsgmpm
               const unsigned int cf = grid.cell_in_field(c, f);
               lower_copy_occupied
                 = lower_copy_occupied
-                  || particles.cell_start[cf + 1] > particles.cell_start[cf];
+                  || particles.cell_end[cf] > particles.cell_begin[cf];
             }
           if (lower_copy_occupied)
             continue;

@@ -69,8 +69,8 @@ namespace fsgmpm
           for (unsigned int ci = b; ci < e; ++ci)
             {
               const unsigned int c = particles.occupied_cells[ci];
-              for (unsigned int p = particles.cell_start[c];
-                   p < particles.cell_start[c + 1];
+              for (unsigned int p = particles.cell_begin[c];
+                   p < particles.cell_end[c];
                    ++p)
                 {
                   const MaterialOptions &o = options[particles.material_id[p]];

@@ -31,8 +31,8 @@ namespace fsgmpm
             if (blend)
               v[k] = nodes.velocity[grid.cell_nodes[c][k]];
           }
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           {
             const auto     lambda = grid.barycentric(c, particles.position[p]);
@@ -65,8 +65,8 @@ namespace fsgmpm
       if (!particles.has_affine_velocity())
         return;
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           particles.affine_velocity[p] = smoothing.velocity_gradient[c];
       });

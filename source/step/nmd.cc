@@ -35,8 +35,8 @@ namespace fsgmpm
               c,
               [](unsigned int) { return true; },
               scale);
-            for (unsigned int p = particles.cell_start[c];
-                 p < particles.cell_start[c + 1];
+            for (unsigned int p = particles.cell_begin[c];
+                 p < particles.cell_end[c];
                  ++p)
               {
                 const unsigned int m = particles.material_id[p];

@@ -25,8 +25,8 @@ namespace fsgmpm
         Tensor<2, dim> volume_stress;
         Tensor<2, dim> nodal_volume_stress[dim + 1];
         double         points_volume = 0;
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           {
             const auto   lambda = grid.barycentric(c, particles.position[p]);

@@ -26,8 +26,8 @@ namespace fsgmpm
               for (unsigned int k = 0; k < dim + 1; ++k)
                 v[k] = nodes.velocity[grid.cell_nodes[c][k]];
               double max_disp = 0;
-              for (unsigned int p = particles.cell_start[c];
-                   p < particles.cell_start[c + 1];
+              for (unsigned int p = particles.cell_begin[c];
+                   p < particles.cell_end[c];
                    ++p)
                 {
                   const auto lambda

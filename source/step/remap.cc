@@ -45,8 +45,8 @@ namespace fsgmpm
 
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         Tensor<1, dim> mv[dim + 1];
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           {
             const auto lambda = grid.barycentric(c, particles.position[p]);

@@ -24,14 +24,21 @@ namespace fsgmpm
       // for NMD materials, the nodal rates of the nmd stage.
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         const auto kinematics_of = [dt](const Tensor<2, dim> &L) {
-          Tensor<2, 3> L3;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              L3[i][j] = L[i][j];
+          // d = sym(L), W = skew(L) in 3x3 (plane strain: zero third row and
+          // column), written entry by entry: the tensor expressions compile
+          // to partial stores reloaded as pairs, which stall.
           PointKinematics kin;
-          kin.strain_rate = symmetrize(L3);
-          kin.spin        = 0.5 * (L3 - transpose(L3));
-          kin.rotation    = incremental_rotation(kin.spin, dt);
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              kin.strain_rate[i][i] = L[i][i];
+              for (unsigned int j = i + 1; j < dim; ++j)
+                {
+                  kin.strain_rate[i][j] = (L[i][j] + L[j][i]) * 0.5;
+                  kin.spin[i][j]        = 0.5 * (L[i][j] - L[j][i]);
+                  kin.spin[j][i]        = -kin.spin[i][j];
+                }
+            }
+          kin.rotation = incremental_rotation(kin.spin, dt);
           return kin;
         };
         // With the projection every point gets its own kinematics below;
@@ -44,38 +51,50 @@ namespace fsgmpm
         const double theta
           = per_point ? CellLoops::projection_share(grid, particles, c) : 0.;
         thread_local std::vector<PointKinematics> kinematics;
-        const unsigned int begin = particles.cell_start[c];
-        const unsigned int end   = particles.cell_start[c + 1];
+        const unsigned int begin = particles.cell_begin[c];
+        const unsigned int end   = particles.cell_end[c];
         kinematics.assign(end - begin, cell_kin);
+        // The volumetric strain rate and its exponential are those of the
+        // cell and material unless every point has its own kinematics: one
+        // exp per run of points of the same material, not per point.
+        unsigned int run_material  = numbers::invalid_unsigned_int;
+        double       volume_factor = 1.;
         for (unsigned int p = begin; p < end; ++p)
           {
-            PointKinematics &kin = kinematics[p - begin];
-            if (per_point)
-              kin = kinematics_of(point_velocity_gradient(
-                grid,
-                smoothing,
-                c,
-                theta,
-                grid.barycentric(c, particles.position[p])));
-            const double       rate = trace(kin.strain_rate);
-            const unsigned int m    = particles.material_id[p];
-            if (options[m].nmd)
+            PointKinematics   &kin = kinematics[p - begin];
+            const unsigned int m   = particles.material_id[p];
+            if (per_point || m != run_material)
               {
-                // Eq. (25): the smoothed rate at the cell centre replaces the
-                // volumetric part; in plane strain only xx and yy change, so
-                // that the zz strain rate stays zero.
-                double smoothed = 0;
-                for (const unsigned int i : grid.cell_nodes[c])
-                  smoothed += smoothing.average(m, i);
-                smoothed /= (dim + 1);
-                const double correction = (smoothed - rate) / dim;
-                for (unsigned int d = 0; d < dim; ++d)
-                  kin.strain_rate[d][d] += correction;
+                if (per_point)
+                  kin = kinematics_of(point_velocity_gradient(
+                    grid,
+                    smoothing,
+                    c,
+                    theta,
+                    grid.barycentric(c, particles.position[p])));
+                if (options[m].nmd)
+                  {
+                    // Eq. (25): the smoothed rate at the cell centre
+                    // replaces the volumetric part; in plane strain only xx
+                    // and yy change, so that the zz strain rate stays zero.
+                    double smoothed = 0;
+                    for (const unsigned int i : grid.cell_nodes[c])
+                      smoothed += smoothing.average(m, i);
+                    smoothed /= (dim + 1);
+                    const double correction
+                      = (smoothed - trace(kin.strain_rate)) / dim;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      kin.strain_rate[d][d] += correction;
+                  }
+                volume_factor = std::exp(dt * trace(kin.strain_rate));
+                run_material  = m;
               }
+            else
+              kin.strain_rate = kinematics[p - begin - 1].strain_rate;
             // Volume (and so density) with the same volumetric rate as the
             // pressure.
             const double J = materials[m]->admissible_volume_ratio(
-              particles.volume[p] * std::exp(dt * trace(kin.strain_rate))
+              particles.volume[p] * volume_factor
               / particles.reference_volume[p]);
             particles.volume[p] = J * particles.reference_volume[p];
             kin.volume_ratio    = J;

