@@ -35,6 +35,19 @@ namespace fsgmpm
           c,
           [&](const unsigned int p) { return !particles.free_surface[p]; },
           scale);
+        // Every point of the cell adds to the same dim + 1 nodes: sum over
+        // each run of points of one material first, then add once per node.
+        unsigned int run_material = numbers::invalid_unsigned_int;
+        double       pV_sum = 0, w_sum = 0;
+        const auto   flush = [&]() {
+          if (w_sum > 0)
+            for (const unsigned int i : grid.cell_nodes[c])
+              {
+                smoothing.numerator[run_material][i] += pV_sum;
+                smoothing.denominator[run_material][i] += w_sum;
+              }
+          pV_sum = w_sum = 0;
+        };
         for (unsigned int p = particles.cell_begin[c];
              p < particles.cell_end[c];
              ++p)
@@ -42,16 +55,17 @@ namespace fsgmpm
             const unsigned int m = particles.material_id[p];
             if (!options[m].anp || particles.free_surface[p])
               continue;
-            const double w  = scale[m] * particles.volume[p];
-            const double pV = -trace(particles.stress[p]) / 3. * w;
-            for (const unsigned int i : grid.cell_nodes[c])
+            if (m != run_material)
               {
-                smoothing.numerator[m][i] += pV;
-                smoothing.denominator[m][i] += w;
+                flush();
+                run_material = m;
               }
+            const double w = scale[m] * particles.volume[p];
+            pV_sum += -trace(particles.stress[p]) / 3. * w;
+            w_sum += w;
           }
+        flush();
       });
-
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         // Without interpolation p_bar is the cell's, per material: computed
         // once per run of points of the same material.

@@ -35,6 +35,19 @@ namespace fsgmpm
               c,
               [](unsigned int) { return true; },
               scale);
+            // Every point of the cell adds to the same dim + 1 nodes: sum
+            // the weights over each run of points of one material first.
+            unsigned int run_material = numbers::invalid_unsigned_int;
+            double       w_sum        = 0;
+            const auto   flush        = [&]() {
+              if (w_sum > 0)
+                for (const unsigned int i : grid.cell_nodes[c])
+                  {
+                    smoothing.numerator[run_material][i] += w_sum * rate;
+                    smoothing.denominator[run_material][i] += w_sum;
+                  }
+              w_sum = 0;
+            };
             for (unsigned int p = particles.cell_begin[c];
                  p < particles.cell_end[c];
                  ++p)
@@ -42,13 +55,14 @@ namespace fsgmpm
                 const unsigned int m = particles.material_id[p];
                 if (!options[m].nmd)
                   continue;
-                const double w = scale[m] * particles.volume[p];
-                for (const unsigned int i : grid.cell_nodes[c])
+                if (m != run_material)
                   {
-                    smoothing.numerator[m][i] += w * rate;
-                    smoothing.denominator[m][i] += w;
+                    flush();
+                    run_material = m;
                   }
+                w_sum += scale[m] * particles.volume[p];
               }
+            flush();
           });
     }
 
