@@ -26,24 +26,32 @@ namespace fsgmpm
 {
   namespace
   {
-    enum Stage : unsigned int
+    /// The run-control stages timed besides MpmStep's.
+    const std::vector<std::string> run_stage_names
+      = {"monitors", "kinetic_damping", "output"};
+    enum RunStage : unsigned int
     {
-      time_step_stage,
-      p2g_stage,
-      grid_update_stage,
-      g2p_stage,
-      remap_stage,
-      nmd_stage,
-      stress_update_stage,
-      free_surface_stage,
-      anp_stage,
-      position_stage,
-      relocate_stage,
       monitor_stage,
-      output_stage,
-      n_stages
+      kinetic_damping_stage,
+      output_stage
     };
 
+    template <int dim>
+    typename MpmStep<dim>::Settings
+    step_settings(const Parameters<dim> &params)
+    {
+      typename MpmStep<dim>::Settings settings;
+      settings.stress_integration         = params.stress_integration;
+      settings.use_musl                   = params.use_musl;
+      settings.apic_affine_remap          = params.apic_affine_remap;
+      settings.flip_noise_relaxation_time = params.flip_noise_relaxation_time;
+      settings.local_damping              = params.local_damping;
+      settings.courant                    = params.courant;
+      settings.mass_scaling               = params.mass_scaling;
+      settings.contact_friction           = params.contact_friction;
+      settings.contact_volume_fraction    = params.contact_volume_fraction;
+      return settings;
+    }
   } // namespace
 
 
@@ -52,20 +60,28 @@ namespace fsgmpm
   const std::vector<std::string> &
   Simulator<dim>::stage_names()
   {
-    static const std::vector<std::string> names = {"time_step",
-                                                   "p2g",
-                                                   "grid_update",
-                                                   "g2p",
-                                                   "remap",
-                                                   "velocity_gradient_nmd",
-                                                   "stress_update",
-                                                   "free_surface",
-                                                   "anp",
-                                                   "position_update",
-                                                   "relocate",
-                                                   "monitors",
-                                                   "output"};
+    static const std::vector<std::string> names = [] {
+      std::vector<std::string> n = MpmStep<dim>::stage_names();
+      n.insert(n.end(), run_stage_names.begin(), run_stage_names.end());
+      return n;
+    }();
     return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Simulator<dim>::get_stage_seconds() const
+  {
+    std::vector<double> seconds = mpm_step->stage_seconds();
+    for (const double s : run_stage_seconds)
+      seconds.push_back(s);
+    // Plus what the run spent before its restart.
+    if (restored_stage_seconds.size() == seconds.size())
+      for (unsigned int s = 0; s < seconds.size(); ++s)
+        seconds[s] += restored_stage_seconds[s];
+    return seconds;
   }
 
 
@@ -76,7 +92,7 @@ namespace fsgmpm
     , stability_guard({params.energy_creation_tolerance,
                        params.ke_growth_factor,
                        params.ke_growth_window})
-    , stage_seconds(n_stages, 0.)
+    , run_stage_seconds(run_stage_names.size(), 0.)
     , parameter_listing(parameter_values(prm))
   {
     if (params.n_threads > 0)
@@ -142,6 +158,16 @@ namespace fsgmpm
     setup_membrane(prm, cell_size);
     setup_bodies();
     smoothing.resize(materials.size(), grid->n_nodes(), grid->n_cells());
+    mpm_step = std::make_unique<MpmStep<dim>>(*grid,
+                                              *constraints,
+                                              materials,
+                                              material_options,
+                                              step_settings(params),
+                                              particles,
+                                              nodes,
+                                              smoothing);
+    if (membrane)
+      mpm_step->attach_membrane(*membrane, membrane_split_length);
 
     scene_monitors = std::make_unique<SceneMonitors<dim>>(prm,
                                                           grid->lower_corner,
@@ -439,10 +465,10 @@ namespace fsgmpm
   Simulator<dim>::advance()
   {
     using Clock = std::chrono::steady_clock;
-    auto timed  = [&](const Stage s, const auto &f) {
+    auto timed  = [&](const RunStage s, const auto &f) {
       const auto t0 = Clock::now();
       f();
-      stage_seconds[s]
+      run_stage_seconds[s]
         += std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
@@ -458,44 +484,8 @@ namespace fsgmpm
 
     // P2G first: the membrane's nodal time-step bound needs the nodal
     // masses (p2g does not depend on dt).
-    timed(p2g_stage, [&] {
-      Stages::p2g(*grid, particles, nodes, params.stress_integration);
-      if (membrane)
-        Stages::membrane_p2g(*grid, *membrane, nodes);
-      Stages::contact_normals(*grid, particles, nodes);
-    });
-
-    double dt_stable = 0;
-    timed(time_step_stage, [&] {
-      dt_stable
-        = Stages::stable_time_step(*grid,
-                                   particles,
-                                   materials,
-                                   params.courant,
-                                   membrane ? &cell_stiffness : nullptr);
-      if (membrane)
-        {
-          // The nodes the membrane touches: the nodal bound with the
-          // membrane's and the points' stiffness (which holds the points'
-          // share there, so the smaller of the two bounds governs).
-          const double dt_m
-            = params.courant
-              * Stages::membrane_time_step(*grid,
-                                           *membrane,
-                                           cell_stiffness,
-                                           particles.occupied_cells,
-                                           nodes,
-                                           params.mass_scaling
-                                             ? dt_stable / params.courant
-                                             : 0.);
-          dt_stable = std::min(dt_stable, dt_m);
-        }
-      // Local damping -alpha |F| sign(v) stiffens every node by up to
-      // (1 + alpha) while it moves away from equilibrium, so the central
-      // difference limit 2 sqrt(m/k) drops to 2 sqrt(m/((1 + alpha) k))
-      // (exact for one degree of freedom; doc/stability.md).
-      dt_stable /= std::sqrt(1. + params.local_damping);
-    });
+    mpm_step->transfer_to_grid();
+    const double dt_stable = mpm_step->stable_time_step();
     if (params.fixed_dt > 0)
       {
         dt = params.fixed_dt;
@@ -522,95 +512,13 @@ namespace fsgmpm
         return false;
       }
 
-    const Tensor<1, dim>     gravity = current_gravity();
-    Stages::GridUpdateResult grid_result;
-    double                   displacement_ratio = 0;
-    unsigned int             lost = 0, membrane_outside = 0;
-
-    // Walls with prescribed motion act on v^{n+1}.
-    constraints->set_time(time + dt);
-    timed(grid_update_stage, [&] {
-      grid_result = Stages::grid_update(
-        *constraints, gravity, params.local_damping, dt, nodes);
-      // The contact's dissipation is not booked as damping work: the nodal
-      // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
-      // guard only objects to energy gained.
-      Stages::field_contact(*grid,
-                            *constraints,
-                            params.contact_friction,
-                            params.contact_volume_fraction,
-                            dt,
-                            true,
-                            nodes);
-    });
-    timed(g2p_stage, [&] {
-      const double tau = params.flip_noise_relaxation_time;
-      Stages::g2p(
-        *grid, nodes, dt, particles, tau > 0 ? -std::expm1(-dt / tau) : 0.);
-      if (membrane)
-        Stages::membrane_g2p(*grid, nodes, *membrane);
-    });
-    if (params.use_musl)
-      timed(remap_stage, [&] {
-        Stages::remap(*grid,
-                      particles,
-                      *constraints,
-                      nodes,
-                      membrane.get(),
-                      params.apic_affine_remap);
-        Stages::field_contact(*grid,
-                              *constraints,
-                              params.contact_friction,
-                              params.contact_volume_fraction,
-                              dt,
-                              false,
-                              nodes);
-      });
-    timed(nmd_stage, [&] {
-      Stages::velocity_gradients(*grid, nodes, smoothing, particles);
-      if (params.stress_integration
-          == Stages::StressIntegration::nodal_projection)
-        Stages::nodal_velocity_gradients(*grid, nodes, smoothing, particles);
-      Stages::store_affine_velocity(smoothing, particles);
-      Stages::nmd(*grid, nodes, material_options, smoothing, particles);
-    });
-    timed(stress_update_stage, [&] {
-      Stages::stress_update(*grid,
-                            materials,
-                            material_options,
-                            dt,
-                            smoothing,
-                            particles,
-                            params.stress_integration);
-    });
-    timed(free_surface_stage, [&] {
-      set_free_surface_fraction(Stages::detect_free_surface(
-        *grid, nodes, material_options, smoothing, particles));
-    });
-    timed(anp_stage, [&] {
-      Stages::average_nodal_pressure(
-        *grid, nodes, material_options, smoothing, particles);
-    });
-    timed(position_stage, [&] {
-      displacement_ratio
-        = Stages::update_positions(*grid, nodes, dt, particles);
-      if (membrane)
-        displacement_ratio
-          = std::max(displacement_ratio,
-                     Stages::membrane_positions(*grid, nodes, dt, *membrane));
-    });
-    if (std::isfinite(displacement_ratio))
-      timed(relocate_stage, [&] {
-        lost = Stages::relocate(*grid, particles);
-        if (membrane)
-          membrane_outside = Stages::membrane_relocate(*grid,
-                                                       membrane_split_length,
-                                                       *membrane);
-      });
-    if (membrane_outside > 0)
+    const typename MpmStep<dim>::Result result
+      = mpm_step->advance(dt, time + dt, current_gravity());
+    set_free_surface_fraction(result.free_surface);
+    if (result.membrane_nodes_outside > 0)
       {
         termination = Termination::error;
-        diagnosis   = std::to_string(membrane_outside)
+        diagnosis   = std::to_string(result.membrane_nodes_outside)
                     + " membrane node(s) left the mesh at step "
                     + std::to_string(step)
                     + "; enlarge the grid or check the walls.";
@@ -626,9 +534,9 @@ namespace fsgmpm
     bool ok = true;
     timed(monitor_stage, [&] {
       compute_monitors();
-      monitors.lost_particles += lost;
-      monitors.external_work += grid_result.external_work_increment;
-      monitors.dissipated_energy += grid_result.damping_work_increment;
+      monitors.lost_particles += result.lost_particles;
+      monitors.external_work += result.grid.external_work_increment;
+      monitors.dissipated_energy += result.grid.damping_work_increment;
 
       // Eq. (30) and the rest criterion from the nodal (remapped)
       // velocities.
@@ -639,11 +547,12 @@ namespace fsgmpm
       monitors.dr_energy_ratio     = (monitors.external_work > 0)
                                        ? nodal_ke / monitors.external_work
                                        : std::numeric_limits<double>::infinity();
-      monitors.dr_force_ratio      = (grid_result.external_norm_sq > 0)
-                                       ? std::sqrt(grid_result.unbalanced_norm_sq
-                                              / grid_result.external_norm_sq)
+      monitors.dr_force_ratio      = (result.grid.external_norm_sq > 0)
+                                       ? std::sqrt(result.grid.unbalanced_norm_sq
+                                              / result.grid.external_norm_sq)
                                        : std::numeric_limits<double>::infinity();
-
+    });
+    timed(kinetic_damping_stage, [&] {
       if (params.kinetic_damping
           && monitors.kinetic_energy < previous_kinetic_energy)
         {
@@ -661,8 +570,9 @@ namespace fsgmpm
           monitors.kinetic_energy = 0;
         }
       previous_kinetic_energy = monitors.kinetic_energy;
-
-      ok = check_stability(displacement_ratio);
+    });
+    timed(monitor_stage, [&] {
+      ok = check_stability(result.displacement_ratio);
 
       // Convergence is only meaningful once the full load is applied.
       if (time >= params.gravity_ramp_time
@@ -861,7 +771,7 @@ namespace fsgmpm
           {
             const auto t0 = Clock::now();
             write_output();
-            stage_seconds[output_stage]
+            run_stage_seconds[output_stage]
               += std::chrono::duration<double>(Clock::now() - t0).count();
             last_output_step = step;
             // The next multiple of the interval after now (a loop adding
@@ -932,10 +842,11 @@ namespace fsgmpm
   void
   Simulator<dim>::write_summary(const double wall) const
   {
-    std::string stages = "{";
-    for (unsigned int s = 0; s < n_stages; ++s)
+    std::string               stages  = "{";
+    const std::vector<double> seconds = get_stage_seconds();
+    for (unsigned int s = 0; s < seconds.size(); ++s)
       stages += (s ? ", " : "") + json_string(stage_names()[s]) + ": "
-                + json_number(stage_seconds[s]);
+                + json_number(seconds[s]);
     stages += "}";
     std::vector<std::pair<std::string, std::string>> entries
       = {{"dim", std::to_string(dim)},

@@ -17,6 +17,7 @@
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/step/material_options.h>
+#include <fsgmpm/step/mpm_step.h>
 #include <fsgmpm/step/smoothing_fields.h>
 
 #include <array>
@@ -167,13 +168,19 @@ namespace fsgmpm
     double
     get_grid_memory_per_particle() const;
 
-    /// Names of the timed stages, in step order.
+    /// Names of the timed stages: MpmStep's in step order, then the run
+    /// control's (monitors, kinetic damping, output).
     static const std::vector<std::string> &
     stage_names();
-    const std::vector<double> &
-    get_stage_seconds() const
+    /// Wall seconds per stage so far, in stage_names() order.
+    std::vector<double>
+    get_stage_seconds() const;
+
+    /// The explicit step this run drives.
+    MpmStep<dim> &
+    get_mpm_step()
     {
-      return stage_seconds;
+      return *mpm_step;
     }
 
   private:
@@ -212,8 +219,6 @@ namespace fsgmpm
     std::unique_ptr<BackgroundGrid<dim>>   grid;
     std::unique_ptr<NodalConstraints<dim>> constraints;
     NodalFields<dim>                       nodes;
-    /// Per cell sum_p V_p M_p for the membrane's nodal time-step bound.
-    std::vector<double>                    cell_stiffness;
     ParticleStore<dim>                     particles;
     std::vector<std::unique_ptr<Material>> materials;
     std::vector<MaterialOptions>           material_options;
@@ -240,7 +245,10 @@ namespace fsgmpm
     std::string    diagnosis;
     StabilityGuard stability_guard;
 
-    std::vector<double>          stage_seconds;
+    std::unique_ptr<MpmStep<dim>> mpm_step;
+    /// Wall seconds of the run-control stages, and of all stages before a
+    /// restart (from the checkpoint).
+    std::vector<double>          run_stage_seconds, restored_stage_seconds;
     std::unique_ptr<MonitorFile> monitor_file;
     ParticleOutput<dim>          particle_output;
     std::unique_ptr<PvdSeries>   particle_series, grid_series, membrane_series;

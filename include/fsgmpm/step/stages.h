@@ -18,7 +18,8 @@ namespace fsgmpm
 {
   /**
    * The explicit MPM step as a fixed sequence of named stages (paper Fig. 1,
-   * Eqs. 17-21). A stage knows nothing about the scene; the Simulator calls
+   * Eqs. 17-21). A stage knows nothing about the scene; MpmStep
+   * (step/mpm_step.h) calls
    *
    *   MUSL (default):  p2g (-> contact_normals) -> grid_update
    *                    (-> field_contact) -> g2p -> remap (-> field_contact)

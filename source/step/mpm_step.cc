@@ -1,0 +1,234 @@
+#include <fsgmpm/step/mpm_step.h>
+
+#include <cmath>
+
+namespace fsgmpm
+{
+  template <int dim>
+  MpmStep<dim>::MpmStep(const BackgroundGrid<dim> &grid,
+                        NodalConstraints<dim>     &constraints,
+                        const std::vector<std::unique_ptr<Material>> &materials,
+                        const std::vector<MaterialOptions> &material_options,
+                        const Settings                     &settings,
+                        ParticleStore<dim>                 &particles,
+                        NodalFields<dim>                   &nodes,
+                        SmoothingFields<dim>               &smoothing)
+    : grid(grid)
+    , constraints(constraints)
+    , materials(materials)
+    , material_options(material_options)
+    , settings(settings)
+    , particles(particles)
+    , nodes(nodes)
+    , smoothing(smoothing)
+    , timer(timer_stream, TimerOutput::never, TimerOutput::wall_times)
+  {}
+
+
+
+  template <int dim>
+  void
+  MpmStep<dim>::attach_membrane(Membrane<dim> &m, const double split_length)
+  {
+    membrane              = &m;
+    membrane_split_length = split_length;
+  }
+
+
+
+  template <int dim>
+  const std::vector<std::string> &
+  MpmStep<dim>::stage_names()
+  {
+    static const std::vector<std::string> names = {"p2g",
+                                                   "time_step",
+                                                   "grid_update",
+                                                   "g2p",
+                                                   "remap",
+                                                   "velocity_gradient_nmd",
+                                                   "affine_velocity",
+                                                   "stress_update",
+                                                   "free_surface",
+                                                   "anp",
+                                                   "position_update",
+                                                   "relocate"};
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  MpmStep<dim>::stage_seconds() const
+  {
+    const auto seconds = timer.get_summary_data(TimerOutput::total_wall_time);
+    std::vector<double> result;
+    for (const std::string &name : stage_names())
+      {
+        const auto it = seconds.find(name);
+        result.push_back(it == seconds.end() ? 0. : it->second);
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  MpmStep<dim>::transfer_to_grid()
+  {
+    TimerOutput::Scope scope(timer, "p2g");
+    Stages::p2g(grid, particles, nodes, settings.stress_integration);
+    if (membrane)
+      Stages::membrane_p2g(grid, *membrane, nodes);
+    Stages::contact_normals(grid, particles, nodes);
+  }
+
+
+
+  template <int dim>
+  double
+  MpmStep<dim>::stable_time_step()
+  {
+    TimerOutput::Scope scope(timer, "time_step");
+    double             dt = Stages::stable_time_step(grid,
+                                         particles,
+                                         materials,
+                                         settings.courant,
+                                         membrane ? &cell_stiffness : nullptr);
+    if (membrane)
+      {
+        // The nodes the membrane touches: the nodal bound with the
+        // membrane's and the points' stiffness (which holds the points'
+        // share there, so the smaller of the two bounds governs).
+        const double dt_m
+          = settings.courant
+            * Stages::membrane_time_step(grid,
+                                         *membrane,
+                                         cell_stiffness,
+                                         particles.occupied_cells,
+                                         nodes,
+                                         settings.mass_scaling
+                                           ? dt / settings.courant
+                                           : 0.);
+        dt = std::min(dt, dt_m);
+      }
+    // Local damping -alpha |F| sign(v) stiffens every node by up to
+    // (1 + alpha) while it moves away from equilibrium, so the central
+    // difference limit 2 sqrt(m/k) drops to 2 sqrt(m/((1 + alpha) k))
+    // (exact for one degree of freedom; doc/stability.md).
+    return dt / std::sqrt(1. + settings.local_damping);
+  }
+
+
+
+  template <int dim>
+  typename MpmStep<dim>::Result
+  MpmStep<dim>::advance(const double          dt,
+                        const double          new_time,
+                        const Tensor<1, dim> &gravity)
+  {
+    Result result;
+    // Walls with prescribed motion act on v^{n+1}.
+    constraints.set_time(new_time);
+    {
+      TimerOutput::Scope scope(timer, "grid_update");
+      result.grid = Stages::grid_update(
+        constraints, gravity, settings.local_damping, dt, nodes);
+      // The contact's dissipation is not booked as damping work: the nodal
+      // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
+      // guard only objects to energy gained.
+      Stages::field_contact(grid,
+                            constraints,
+                            settings.contact_friction,
+                            settings.contact_volume_fraction,
+                            dt,
+                            true,
+                            nodes);
+    }
+    {
+      TimerOutput::Scope scope(timer, "g2p");
+      const double       tau = settings.flip_noise_relaxation_time;
+      Stages::g2p(
+        grid, nodes, dt, particles, tau > 0 ? -std::expm1(-dt / tau) : 0.);
+      if (membrane)
+        Stages::membrane_g2p(grid, nodes, *membrane);
+    }
+    if (settings.use_musl)
+      {
+        // Eq. (20): nodal velocities again from the updated points.
+        TimerOutput::Scope scope(timer, "remap");
+        Stages::remap(grid,
+                      particles,
+                      constraints,
+                      nodes,
+                      membrane,
+                      settings.apic_affine_remap);
+        Stages::field_contact(grid,
+                              constraints,
+                              settings.contact_friction,
+                              settings.contact_volume_fraction,
+                              dt,
+                              false,
+                              nodes);
+      }
+    {
+      TimerOutput::Scope scope(timer, "velocity_gradient_nmd");
+      Stages::velocity_gradients(grid, nodes, smoothing, particles);
+      if (settings.stress_integration
+          == Stages::StressIntegration::nodal_projection)
+        Stages::nodal_velocity_gradients(grid, nodes, smoothing, particles);
+      Stages::nmd(grid, nodes, material_options, smoothing, particles);
+    }
+    if (particles.has_affine_velocity())
+      {
+        TimerOutput::Scope scope(timer, "affine_velocity");
+        Stages::store_affine_velocity(smoothing, particles);
+      }
+    {
+      TimerOutput::Scope scope(timer, "stress_update");
+      Stages::stress_update(grid,
+                            materials,
+                            material_options,
+                            dt,
+                            smoothing,
+                            particles,
+                            settings.stress_integration);
+    }
+    {
+      TimerOutput::Scope scope(timer, "free_surface");
+      result.free_surface = Stages::detect_free_surface(
+        grid, nodes, material_options, smoothing, particles);
+    }
+    {
+      TimerOutput::Scope scope(timer, "anp");
+      Stages::average_nodal_pressure(
+        grid, nodes, material_options, smoothing, particles);
+    }
+    {
+      TimerOutput::Scope scope(timer, "position_update");
+      result.displacement_ratio
+        = Stages::update_positions(grid, nodes, dt, particles);
+      if (membrane)
+        result.displacement_ratio
+          = std::max(result.displacement_ratio,
+                     Stages::membrane_positions(grid, nodes, dt, *membrane));
+    }
+    // After a blow-up the positions are not finite and cannot be located;
+    // run control stops the run on the ratio.
+    if (std::isfinite(result.displacement_ratio))
+      {
+        TimerOutput::Scope scope(timer, "relocate");
+        result.lost_particles = Stages::relocate(grid, particles);
+        if (membrane)
+          result.membrane_nodes_outside
+            = Stages::membrane_relocate(grid, membrane_split_length, *membrane);
+      }
+    return result;
+  }
+
+
+
+  template class MpmStep<2>;
+  template class MpmStep<3>;
+} // namespace fsgmpm
