@@ -1,13 +1,13 @@
-// Print the analytic geotube cross-section (tests/reference/
+// Print the analytic geotube cross-section (include/fsgmpm/reference/
 // geotube_reference.h) as CSV: geotube_shape <circumference m> <area m^2>
 // [<unit weight N/m^3> = 12000]. The first line holds the scalars as a
 // comment; then x,y of the closed shape (x centred at 0, base at y = 0).
 
+#include <fsgmpm/reference/geotube_reference.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-
-#include "geotube_reference.h"
 
 int
 main(int argc, char **argv)

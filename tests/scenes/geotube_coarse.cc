@@ -7,10 +7,11 @@
 // off at about 0.05: cell-crossing noise), and the residual sloshing moves
 // single samples by a few per cent while the shape stays put
 // (doc/membrane_validation.md). Reference: the independent analytic
-// solution (tests/reference/geotube_reference.h: inextensible weightless
-// membrane, hydrostatic fill, frictionless base) for the run's own measured
-// enclosed area and membrane length (the solver's error); the error against
-// the nominal 5.56 m^2 and 9.2 m (the user's error) is printed.
+// solution (include/fsgmpm/reference/geotube_reference.h: inextensible
+// weightless membrane, hydrostatic fill, frictionless base) for the run's
+// own measured enclosed area and membrane length (the solver's error); the
+// error against the nominal 5.56 m^2 and 9.2 m (the user's error) is
+// printed.
 // Asserts (issue 13: tolerances a few times the measured errors, not the
 // issue's acceptance aims, so that a change of a few per cent shows):
 // 2D: H/W within 0.004 of the analytic value for the measured area and
@@ -31,11 +32,11 @@
 // Eq. (30) at 1e-3 within 30 s of relaxation.
 
 #include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/reference/geotube_reference.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
-#include "reference/geotube_reference.h"
 #include "test_utilities.h"
 
 #include <cstdio>

@@ -5,6 +5,7 @@
 // 2017 (Comput. Geotech. 81, 112-124), (iv) bad input throws.
 // L = 9.2 m and gamma = 12000 N/m^3 throughout, as in Hamad et al. 2017.
 
+#include <fsgmpm/reference/geotube_reference.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,8 +14,6 @@
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
-
-#include "reference/geotube_reference.h"
 
 namespace
 {

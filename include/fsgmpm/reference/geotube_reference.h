@@ -33,8 +33,8 @@
 // exp(-L^2 / A) (A / L^2 ~ 1 / ln(1 / c)); the search stops at c = 1e-250,
 // so solve() throws below A / L^2 ~ 4.3e-4 (e.g. A < 0.037 m^2 for L = 9.2 m).
 
-#ifndef fsgmpm_tests_reference_geotube_reference_h
-#define fsgmpm_tests_reference_geotube_reference_h
+#ifndef fsgmpm_reference_geotube_reference_h
+#define fsgmpm_reference_geotube_reference_h
 
 #include <algorithm>
 #include <array>
