@@ -5,7 +5,7 @@
 #include <fsgmpm/io/gmsh_reader.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_shape.h>
-#include <fsgmpm/scene/parameters.h>
+#include <fsgmpm/scene/parameter_parsing.h>
 
 #include <algorithm>
 #include <cmath>

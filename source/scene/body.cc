@@ -4,7 +4,7 @@
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/scene/body.h>
-#include <fsgmpm/scene/parameters.h>
+#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/shape_factory.h>
 
 

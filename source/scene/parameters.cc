@@ -5,6 +5,7 @@
 #include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/scene/body.h>
+#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/parameters.h>
 
 #include <limits>
@@ -17,49 +18,6 @@ namespace fsgmpm
     /// Largest coordinate of a box corner (m).
     constexpr double max_coordinate = 1e9;
   } // namespace
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  parse_vector(const std::string &text, const std::string &path)
-  {
-    const auto     items = Utilities::split_string_list(text, ',');
-    Tensor<1, dim> v;
-    // A two-entry value is accepted in 3D with z = 0: y is vertical in 2D
-    // and 3D alike, so 2D vectors such as gravity carry over unchanged.
-    AssertThrow(items.size() == dim || (dim == 3 && items.size() == 2),
-                ExcMessage(path + " must have " + std::to_string(dim)
-                           + " comma-separated numbers; got <" + text + ">."));
-    for (unsigned int d = 0; d < items.size(); ++d)
-      {
-        try
-          {
-            v[d] = Utilities::string_to_double(items[d]);
-          }
-        catch (...)
-          {
-            AssertThrow(false,
-                        ExcMessage(path + ": <" + items[d]
-                                   + "> is not a number."));
-          }
-        AssertThrow(std::isfinite(v[d]),
-                    ExcMessage(path + ": <" + items[d]
-                               + "> is not a finite number."));
-      }
-    return v;
-  }
-
-
-
-  unsigned int
-  get_dimension(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Simulation");
-    const unsigned int d = prm.get_integer("Dimension");
-    prm.leave_subsection();
-    return d;
-  }
 
 
 
@@ -558,21 +516,4 @@ namespace fsgmpm
 
   template struct Parameters<2>;
   template struct Parameters<3>;
-  std::vector<Point<2>>
-  parse_polygon(const std::string &text, const std::string &path)
-  {
-    std::vector<Point<2>> vertices;
-    for (const auto &item : Utilities::split_string_list(text, ';'))
-      vertices.emplace_back(parse_vector<2>(item, path));
-    AssertThrow(vertices.size() >= 3,
-                ExcMessage(path
-                           + " needs at least three vertices "
-                             "'x0, y0; x1, y1; x2, y2'."));
-    return vertices;
-  }
-
-  template Tensor<1, 2>
-  parse_vector<2>(const std::string &, const std::string &);
-  template Tensor<1, 3>
-  parse_vector<3>(const std::string &, const std::string &);
 } // namespace fsgmpm

@@ -2,7 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/io/format.h>
-#include <fsgmpm/scene/parameters.h>
+#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/shape_factory.h>
 
 #include <sstream>

@@ -12,6 +12,9 @@
 
 namespace fsgmpm
 {
+  /// The largest number of bodies a scene may declare.
+  constexpr unsigned int max_n_bodies = 8;
+
   /**
    * One body of a scene, as given in subsection Bodies/Body N: the shape it
    * fills, its material and its initial state.

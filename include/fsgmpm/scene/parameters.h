@@ -6,6 +6,7 @@
 
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/moving_wall.h>
+#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/step/stress_integration.h>
 
 #include <map>
@@ -15,9 +16,6 @@
 namespace fsgmpm
 {
   using namespace dealii;
-
-  /// The largest number of bodies a scene may declare.
-  constexpr unsigned int max_n_bodies = 8;
 
   /**
    * All run parameters that do not depend on the bodies, read from a
@@ -95,19 +93,6 @@ namespace fsgmpm
     bool         quiet;
   };
 
-  /// Read a list of dim doubles, throwing a message that names @p path.
-  template <int dim>
-  Tensor<1, dim>
-  parse_vector(const std::string &text, const std::string &path);
-
-  /// Read a closed 2D polygon 'x0, y0; x1, y1; ...' (at least three
-  /// vertices), throwing a message that names @p path.
-  std::vector<Point<2>>
-  parse_polygon(const std::string &text, const std::string &path);
-
-  /// The dimension requested by Simulation/Dimension.
-  unsigned int
-  get_dimension(ParameterHandler &prm);
 } // namespace fsgmpm
 
 #endif
