@@ -1,0 +1,95 @@
+#ifndef fsgmpm_membrane_membrane_fe_h
+#define fsgmpm_membrane_membrane_fe_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * The membrane's internal forces on deal.II's finite-element machinery
+   * (issue 17, first part; not yet coupled to the grid): FE_SimplexP of
+   * degree 1 or 2 on the membrane's codim-1 triangulation (cables: lines in
+   * 2D; surfaces: triangles in 3D), total Lagrangian on the rest geometry,
+   * forces by FEValues quadrature. The node values are the current
+   * positions of the support points (one scalar DoF per support point,
+   * dim components stored per point), so the element is the vector-valued
+   * P_k of the membrane.
+   *
+   * Material law, as MembraneMechanics (the hand-written elements, the
+   * reference this reproduces at degree 1):
+   * - 2D cables: T = EA max(0, lambda - 1) with the stretch lambda = |F t|
+   *   (engineering strain, tension only);
+   * - 3D: Green-Lagrange E = (F^T F - I)/2 in an orthonormal frame of the
+   *   rest surface, plane-stress Saint Venant-Kirchhoff S, the compression
+   *   cut-off of Eqs. (9)-(10) on S, and f_i = -int S_ab (F t_a)
+   *   (grad N_i . t_b) dA.
+   * The forces are those ON the support points (-dW/dx).
+   */
+  template <int dim>
+  class MembraneFE
+  {
+  public:
+    /// @p rest: the membrane at rest (copied); EA = E thickness (N/m);
+    /// @p nu the Poisson ratio (3D only). Throws on degree other than 1
+    /// or 2, or on EA or nu out of range.
+    MembraneFE(const Triangulation<dim - 1, dim> &rest,
+               const unsigned int                 degree,
+               const double                       EA,
+               const double                       nu);
+
+    unsigned int
+    n_support_points() const
+    {
+      return rest_points.size();
+    }
+
+    /// Rest positions of the support points, in DoF order.
+    const std::vector<Point<dim>> &
+    rest_support_points() const
+    {
+      return rest_points;
+    }
+
+    /// Forces on the support points for the current positions @p x (same
+    /// order as rest_support_points()).
+    std::vector<Tensor<1, dim>>
+    internal_forces(const std::vector<Point<dim>> &x) const;
+
+    /// Lumped mass of each support point for the areal mass @p mu (kg/m^2,
+    /// kg/m for cables): the diagonal of the consistent mass matrix scaled
+    /// to the element's mass (HRZ lumping: positive at every node, also at
+    /// the vertices of quadratic triangles where row sums are zero).
+    std::vector<double>
+    lumped_masses(const double mu) const;
+
+    const DoFHandler<dim - 1, dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+  private:
+    Triangulation<dim - 1, dim> triangulation;
+    FE_SimplexP<dim - 1, dim>   fe;
+    MappingFE<dim - 1, dim>     mapping;
+    Quadrature<dim - 1>         quadrature;
+    DoFHandler<dim - 1, dim>    dof_handler;
+    std::vector<Point<dim>>     rest_points;
+    double                      EA, nu;
+  };
+} // namespace fsgmpm
+
+#endif

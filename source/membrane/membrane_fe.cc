@@ -1,0 +1,177 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fsgmpm/membrane/membrane_fe.h>
+#include <fsgmpm/membrane/membrane_mechanics.h>
+
+#include <cmath>
+#include <map>
+
+namespace fsgmpm
+{
+  namespace
+  {
+    /// An orthonormal frame of the rest surface at a quadrature point from
+    /// the Jacobian's columns (Gram-Schmidt): t[0] along the first.
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangent_frame(const DerivativeForm<1, dim - 1, dim> &jacobian)
+    {
+      std::array<Tensor<1, dim>, dim - 1> t;
+      for (unsigned int a = 0; a < dim - 1; ++a)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            t[a][d] = jacobian[d][a];
+          for (unsigned int b = 0; b < a; ++b)
+            t[a] -= (t[a] * t[b]) * t[b];
+          t[a] /= t[a].norm();
+        }
+      return t;
+    }
+
+    unsigned int
+    checked_degree(const unsigned int degree)
+    {
+      AssertThrow(degree == 1 || degree == 2,
+                  ExcMessage("Membrane/Element degree must be 1 or 2; got "
+                             + std::to_string(degree) + "."));
+      return degree;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  MembraneFE<dim>::MembraneFE(const Triangulation<dim - 1, dim> &rest,
+                              const unsigned int                 degree,
+                              const double                       EA,
+                              const double                       nu)
+    : fe(checked_degree(degree))
+    , mapping(FE_SimplexP<dim - 1, dim>(1))
+    , quadrature(QGaussSimplex<dim - 1>(degree + 1))
+    , EA(EA)
+    , nu(nu)
+  {
+    AssertThrow(std::isfinite(EA) && EA > 0,
+                ExcMessage("Membrane: the stiffness EA must be positive and "
+                           "finite."));
+    AssertThrow(dim == 2 || (nu > -1 && nu < 1),
+                ExcMessage("Membrane: the Poisson ratio must lie in (-1, 1) "
+                           "(plane stress)."));
+    triangulation.copy_triangulation(rest);
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+    // The rest geometry is the triangulation's (straight-sided cells); the
+    // support points of degree 2 are the edge midpoints.
+    rest_points.resize(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, rest_points);
+  }
+
+
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  MembraneFE<dim>::internal_forces(const std::vector<Point<dim>> &x) const
+  {
+    AssertThrow(x.size() == n_support_points(),
+                ExcMessage("MembraneFE: one position per support point "
+                           "is needed."));
+    std::vector<Tensor<1, dim>>          force(n_support_points());
+    FEValues<dim - 1, dim>               fe_values(mapping,
+                                     fe,
+                                     quadrature,
+                                     update_gradients | update_jacobians
+                                       | update_JxW_values);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const double                         c = EA / (1 - nu * nu);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dofs);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const auto t = tangent_frame<dim>(fe_values.jacobian(q));
+            // g_a = F t_a = sum_i x_i (grad N_i . t_a), and the tangential
+            // derivatives dN_i/dt_a.
+            std::array<Tensor<1, dim>, dim - 1>      g;
+            std::vector<std::array<double, dim - 1>> dN(dofs.size());
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              for (unsigned int a = 0; a < dim - 1; ++a)
+                {
+                  dN[i][a] = fe_values.shape_grad(i, q) * t[a];
+                  g[a] += dN[i][a] * x[dofs[i]];
+                }
+            // P t_b: the first Piola-Kirchhoff stress against the rest
+            // tangents, f_i = -int sum_b (P t_b) dN_i/dt_b dA.
+            std::array<Tensor<1, dim>, dim - 1> P;
+            if constexpr (dim == 2)
+              {
+                const double stretch = g[0].norm();
+                const double T       = EA * std::max(0., stretch - 1.);
+                if (stretch > 0)
+                  P[0] = (T / stretch) * g[0];
+              }
+            else
+              {
+                const double E11 = (g[0] * g[0] - 1) / 2,
+                             E22 = (g[1] * g[1] - 1) / 2,
+                             E12 = (g[0] * g[1]) / 2;
+                const MembraneMechanics::PlaneStress S
+                  = MembraneMechanics::compression_cutoff(
+                    {{c * (E11 + nu * E22),
+                      c * (nu * E11 + E22),
+                      c * (1 - nu) * E12}});
+                P[0] = S[0] * g[0] + S[2] * g[1];
+                P[1] = S[2] * g[0] + S[1] * g[1];
+              }
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              for (unsigned int b = 0; b < dim - 1; ++b)
+                force[dofs[i]] -= fe_values.JxW(q) * dN[i][b] * P[b];
+          }
+      }
+    return force;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  MembraneFE<dim>::lumped_masses(const double mu) const
+  {
+    std::vector<double>                  mass(n_support_points(), 0.);
+    const QGaussSimplex<dim - 1>         mass_quadrature(fe.degree + 1);
+    FEValues<dim - 1, dim>               fe_values(mapping,
+                                     fe,
+                                     mass_quadrature,
+                                     update_values | update_JxW_values);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<double>                  diagonal(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dofs);
+        double cell_mass = 0, diagonal_sum = 0;
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            diagonal[i] = 0;
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              diagonal[i] += mu * fe_values.shape_value(i, q)
+                             * fe_values.shape_value(i, q) * fe_values.JxW(q);
+            diagonal_sum += diagonal[i];
+          }
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          cell_mass += mu * fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          mass[dofs[i]] += diagonal[i] * cell_mass / diagonal_sum;
+      }
+    return mass;
+  }
+
+
+
+  template class MembraneFE<2>;
+  template class MembraneFE<3>;
+} // namespace fsgmpm
