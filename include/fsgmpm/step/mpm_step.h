@@ -133,8 +133,8 @@ namespace fsgmpm
 
     /// The timer's report goes nowhere: stage_seconds() and the summary
     /// are the outputs.
-    std::ostringstream  timer_stream;
-    mutable TimerOutput timer;
+    std::ostringstream timer_stream;
+    TimerOutput        timer;
   };
 } // namespace fsgmpm
 
