@@ -209,3 +209,14 @@ TEST(MovingWall, BadInput)
   EXPECT_NE(message("0: 0 x").find("is not a number"), std::string::npos);
   EXPECT_EQ(message("0:  0   1 ,0.1: 0 2"), "accepted");
 }
+
+// fsgmpm::set_parameter with a number keeps every digit (std::to_string
+// would have written 1.5e-7 as 0.000000).
+TEST(SetParameter, NumbersKeepTheirDigits)
+{
+  auto prm = test_tools::make_parameters("");
+  set_parameter(*prm, "Simulation/Fixed time step", 1.5e-7);
+  prm->enter_subsection("Simulation");
+  EXPECT_EQ(prm->get_double("Fixed time step"), 1.5e-7);
+  prm->leave_subsection();
+}

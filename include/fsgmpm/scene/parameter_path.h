@@ -5,6 +5,8 @@
 
 #include <boost/property_tree/ptree.hpp>
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +23,20 @@ namespace fsgmpm
   set_parameter(dealii::ParameterHandler &prm,
                 const std::string        &path,
                 const std::string        &value);
+
+  /**
+   * The same for a number, written with 17 significant digits: converting
+   * it with std::to_string would keep 6 decimals, so that 1e-7 became 0.
+   */
+  inline void
+  set_parameter(dealii::ParameterHandler &prm,
+                const std::string        &path,
+                const double              value)
+  {
+    std::ostringstream text;
+    text << std::setprecision(17) << value;
+    set_parameter(prm, path, text.str());
+  }
 
   /// Undo ParameterHandler's name mangling in its JSON output ("_20" for a
   /// space, "_27" for an apostrophe, ...).
