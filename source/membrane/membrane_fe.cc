@@ -86,7 +86,8 @@ namespace fsgmpm
                                      update_gradients | update_jacobians
                                        | update_JxW_values);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    const double                         c = EA / (1 - nu * nu);
+    // dN[i][a] = grad N_i . t_a at the current quadrature point.
+    std::vector<std::array<double, dim - 1>> dN(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
@@ -96,8 +97,7 @@ namespace fsgmpm
             const auto t = tangent_frame<dim>(fe_values.jacobian(q));
             // g_a = F t_a = sum_i x_i (grad N_i . t_a), and the tangential
             // derivatives dN_i/dt_a.
-            std::array<Tensor<1, dim>, dim - 1>      g;
-            std::vector<std::array<double, dim - 1>> dN(dofs.size());
+            std::array<Tensor<1, dim>, dim - 1> g;
             for (unsigned int i = 0; i < dofs.size(); ++i)
               for (unsigned int a = 0; a < dim - 1; ++a)
                 {
@@ -116,14 +116,8 @@ namespace fsgmpm
               }
             else
               {
-                const double E11 = (g[0] * g[0] - 1) / 2,
-                             E22 = (g[1] * g[1] - 1) / 2,
-                             E12 = (g[0] * g[1]) / 2;
                 const MembraneMechanics::PlaneStress S
-                  = MembraneMechanics::compression_cutoff(
-                    {{c * (E11 + nu * E22),
-                      c * (nu * E11 + E22),
-                      c * (1 - nu) * E12}});
+                  = MembraneMechanics::cut_off_svk_stress(g[0], g[1], EA, nu);
                 P[0] = S[0] * g[0] + S[2] * g[1];
                 P[1] = S[2] * g[0] + S[1] * g[1];
               }

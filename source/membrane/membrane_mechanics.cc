@@ -149,6 +149,25 @@ namespace fsgmpm
 
 
 
+    PlaneStress
+    cut_off_svk_stress(const Tensor<1, 3> &g0,
+                       const Tensor<1, 3> &g1,
+                       const double        EA,
+                       const double        nu)
+    {
+      // Green-Lagrange strain E = (F^T F - I)/2 and plane-stress Saint
+      // Venant-Kirchhoff S; neither sees a rigid rotation.
+      const double E11 = (g0 * g0 - 1) / 2, E22 = (g1 * g1 - 1) / 2,
+                   E12 = (g0 * g1) / 2;
+      const double c   = EA / (1 - nu * nu);
+      // Cut-off on S, Eqs. (9)-(10): S and E share the rest frame, and
+      // principal values and directions of S do not depend on that frame.
+      return compression_cutoff(
+        {{c * (E11 + nu * E22), c * (nu * E11 + E22), c * (1 - nu) * E12}});
+    }
+
+
+
     TriangleResponse
     triangle_forces(const TriangleReference     &ref,
                     const Point<3>              &x1,
@@ -171,15 +190,7 @@ namespace fsgmpm
       const Tensor<1, 3>  g0 = Di[0][0] * d1 + Di[1][0] * d2;
       const Tensor<1, 3>  g1 = Di[0][1] * d1 + Di[1][1] * d2;
 
-      // Green-Lagrange strain E = (F^T F - I)/2 and plane-stress Saint
-      // Venant-Kirchhoff S; neither sees a rigid rotation.
-      const double E11 = (g0 * g0 - 1) / 2, E22 = (g1 * g1 - 1) / 2,
-                   E12 = (g0 * g1) / 2;
-      const double c   = EA / (1 - nu * nu);
-      // Cut-off on S, Eqs. (9)-(10): S and E share the rest frame, and
-      // principal values and directions of S do not depend on that frame.
-      const PlaneStress S = compression_cutoff(
-        {{c * (E11 + nu * E22), c * (nu * E11 + E22), c * (1 - nu) * E12}});
+      const PlaneStress S = cut_off_svk_stress(g0, g1, EA, nu);
 
       // First Piola-Kirchhoff P = F S (3x2) and [f2, f3] = -A0 P Dm^{-T}:
       // while taut, exactly -dW/dx with W = A0 E:S/2.

@@ -59,6 +59,20 @@ namespace fsgmpm
     compression_cutoff(const PlaneStress &s);
 
     /**
+     * Second Piola-Kirchhoff membrane stress {S11, S22, S12} (N/m) in an
+     * orthonormal frame of the rest surface, from the images g0 = F t0,
+     * g1 = F t1 of that frame: Green-Lagrange E = (F^T F - I)/2,
+     * plane-stress Saint Venant-Kirchhoff with EA = E thickness and nu,
+     * then the compression cut-off Eqs. (9)-(10). Shared by the
+     * hand-written triangle and MembraneFE.
+     */
+    PlaneStress
+    cut_off_svk_stress(const Tensor<1, 3> &g0,
+                       const Tensor<1, 3> &g1,
+                       const double        EA,
+                       const double        nu);
+
+    /**
      * Rest geometry of a 3-node triangle: Dm^{-1} with Dm = [X2 - X1,
      * X3 - X1] in an orthonormal frame of the rest plane (e1 along X2 - X1),
      * and the rest area A0.
