@@ -39,11 +39,11 @@
  * common centre of mass while they approach; they slide and separate
  * freely. Two more choices, both measured on the doc page: the water is
  * weakly compressible (K_f = 2.13e7 Pa, sound speed 146 m/s; the real
- * 2.13e9 moves the velocity history by 0.005 m/s RMS at 4 cm), and the
- * stress is integrated from a linear nodal field (`Stress integration =
- * nodal projection`) instead of the paper's NMD and ANP (Eqs. 22-29),
- * under which the water's point cloud compacted and its falling points fed
- * the sinking.
+ * 2.13e9 moves the velocity history to 0.8 s by 0.005 m/s RMS at 4 cm),
+ * and the stress is integrated from a linear nodal field (`Stress
+ * integration = nodal projection`) instead of the paper's NMD and ANP
+ * (Eqs. 22-29), under which the water's point cloud compacted and its
+ * falling points fed the sinking.
  *
  * <h3>What the program measures</h3>
  *
