@@ -1,8 +1,8 @@
 #!/bin/bash
 # Issue 16: a tutorial copied out of the tree builds against an installed
 # fsgmpm. Installs the build into a temporary prefix (cmake --install),
-# copies tutorials/step-1 to a temporary directory, configures and builds it
-# with its own CMakeLists.txt against the installed package only, runs it at
+# copies doc/tutorials/step-1 to a temporary directory, configures and builds
+# it with its own CMakeLists.txt against the installed package only, runs it at
 # 10 cells across, and runs the installed fsgmpm program on its default
 # scene for a few steps.
 # Usage: out_of_tree.sh <build dir> <source dir>
@@ -20,7 +20,7 @@ for f in include/fsgmpm/simulator.h include/fsgmpm/step/mpm_step.h bin/fsgmpm; d
 done
 
 # Out of the tree: only the installed headers and library can be found.
-cp -r "$source/tutorials/step-1" "$work/step-1"
+cp -r "$source/doc/tutorials/step-1" "$work/step-1"
 launcher=()
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake -S "$work/step-1" -B "$work/step-1/build" "${launcher[@]}" \

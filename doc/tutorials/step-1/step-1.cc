@@ -230,37 +230,6 @@ main(int argc, char **argv)
 
 /* <h1>Results</h1>
  *
- * `./step-1` (20 cells across the column, 6 400 points, 6 678 steps, 10 s on
- * 2 cores) prints, shortened:
- *
- * @code
- * Column of 6400 points, 20 cells across it.
- *      t [s]        T   Z (fsgmpm)   Z (experiment)
- *      0.000    0.000        1.001            1.000
- *      0.050    0.656        1.252            1.173
- *      0.100    1.312        1.869            1.557
- *      0.150    1.968        2.632            2.313
- *      0.200    2.624        3.526            3.179
- *      0.250    3.280        4.529            4.060
- * Steps: 6678
- * RMS difference of the front from the experiment over T <= 3.33: 0.296
- * @endcode
- *
- * and `./step-1 10` (what ctest runs, 2 s): 0.298. The simulated front runs
- * ahead of the experiment from the start and keeps its lead: the front
- * moves at the measured speed, but about 20 ms early. In the experiment a
- * gate had to be lifted, which the model does not have; delayed by 20 ms
- * the simulation's front agrees with the measurement to 0.04 in Z
- * (doc/water_validation.md measures this on several meshes, and with real
- * water).
- *
- * <h3>Possibilities for extensions</h3>
- *
- * - Measure the height of the water at the wall as well (Martin and Moyce's
- *   second series, H = eta/(2a) against tau = t sqrt(g/a), in
- *   tests/reference/martin_moyce_1952_n2.csv).
- * - Refine: `./step-1 40`. The lead does not change, which tells that it is
- *   not a discretisation error.
- * - Replace the water by sand (`Material model = Mohr-Coulomb`,
- *   doc/soil_validation.md) and follow the run-out of the granular column.
+ * The output of this program and what it shows are in README.md beside
+ * this file.
  */

@@ -254,47 +254,6 @@ main(int argc, char **argv)
 
 /* <h1>Results</h1>
  *
- * `./step-4` (4.4 min on one thread, the machine shared with other jobs;
- * us/ps: microseconds per point and step):
- *
- * @code
- *                setting  points  steps  wall [s]   error  difference  us/ps
- * ref.: 40 cells, 16 ppc  102400  13353     179.1  0.3089      0.000%   0.13
- *               10 cells    1600   3340       0.9  0.2981      2.757%   0.16
- *          10 cells, C 1    1600   1670       0.4  0.2982      2.747%   0.16
- *          20 cells, C 1    6400   3339       4.0  0.2956      0.998%   0.19
- *               20 cells    6400   6678       7.1  0.2963      0.991%   0.17
- *        20 cells, 1 ppc    1600   6676       3.4  0.2193      3.292%   0.32
- *       20 cells, 16 ppc   25600   6676      18.4  0.3081      0.896%   0.11
- *   20 cells, K_f 25 MPa    6400  20625      20.3  0.2949      1.054%   0.15
- *          40 cells, C 1   25600   6686      27.1  0.2908      0.658%   0.16
- * Pareto front (difference against wall time):
- *   10 cells, C 1: 2.747% in 0.4 s
- *   20 cells, C 1: 0.998% in 4.0 s
- *   20 cells: 0.991% in 7.1 s
- *   20 cells, 16 ppc: 0.896% in 18.4 s
- *   40 cells, C 1: 0.658% in 27.1 s
- * @endcode
- *
- * - <b>The error against the experiment does not move with cost</b>
- *   (0.29-0.31), but for 1 point per cell: less converged, it lags the
- *   reference by 3.3%, which cancels part of the model's lead.
- * - <b>The mesh buys the accuracy</b>: 2.75%, 1.00%, 0.66% at 10, 20, 40
- *   cells (C = 1) for 0.4, 4.0, 27 s, seven to nine times the cost each.
- * - <b>The Courant number is free</b>: C = 1 is within 0.01% of C = 0.5 at
- *   half the cost; 20 cells at C = 0.5 is on the front by the strict rule
- *   only (a reference at C = 0.25 moves every difference by up to 0.01%).
- * - <b>Points per cell</b>: 16 gain 0.1% for 2.6 times the time of 4 (and
- *   are cheaper per point and step); 1 per cell is dominated by 10 cells.
- * - <b>The bulk modulus</b>: 25 MPa takes 3.1 times the steps for nothing.
- *
- * `./step-4 small` (ctest, 25 s: the first three settings against 20 cells)
- * gives 10 cells the error 0.2981 (step-1's 0.298) and the difference
- * 2.476%, asserted within about 0.0002 and 0.0025% (five times their change
- * when K_f or C changes by 1e-6), and 20 cells at C = 1 (0.561%) on the front.
- *
- * <h3>Possibilities for extensions</h3>
- *
- * The other levers of doc/accuracy_vs_cost.md (`Stress integration`,
- * `Velocity transfer`); real water; the time per stage, get_stage_seconds().
+ * The output of this program and what it shows are in README.md beside
+ * this file.
  */
