@@ -104,15 +104,22 @@ namespace fsgmpm
         elements.insert(elements.end(), e.begin(), e.end());
       out.put("membrane/elements", elements);
       out.put("membrane/rest_size", m.rest_size);
-      std::vector<double> reference;
-      for (const auto &r : m.reference)
-        {
-          for (unsigned int i = 0; i < 2; ++i)
-            for (unsigned int j = 0; j < 2; ++j)
-              reference.push_back(r.dm_inverse[i][j]);
-          reference.push_back(r.area);
-        }
-      out.put("membrane/reference", reference);
+      // The rest structure of the finite elements (issue 17).
+      out.put("membrane/element_degree", double(m.properties.element_degree));
+      std::vector<double> rest_vertex;
+      for (const auto &x : m.rest_vertex)
+        for (unsigned int d = 0; d < dim; ++d)
+          rest_vertex.push_back(x[d]);
+      out.put("membrane/rest_vertex", rest_vertex);
+      std::vector<unsigned int> fe_cells, edge_node;
+      for (const auto &c : m.fe_cells)
+        fe_cells.insert(fe_cells.end(), c.begin(), c.end());
+      for (const auto &e : m.edge_node)
+        edge_node.insert(edge_node.end(), e.begin(), e.end());
+      out.put("membrane/fe_cells", fe_cells);
+      out.put("membrane/vertex_node", m.vertex_node);
+      out.put("membrane/edge_node", edge_node);
+      out.put("membrane/element_cell", m.element_cell);
       out.put("membrane/tension", m.tension);
       out.put("membrane/minor_tension", m.minor_tension);
     }
@@ -171,23 +178,57 @@ namespace fsgmpm
       m.rest_size           = in.doubles("membrane/rest_size");
       m.tension             = in.doubles("membrane/tension");
       m.minor_tension       = in.doubles("membrane/minor_tension");
-      const auto &reference = in.doubles("membrane/reference");
-      AssertThrow(reference.size() % 5 == 0,
-                  damaged("its reference triangles are incomplete"));
-      m.reference.resize(reference.size() / 5);
-      for (unsigned int e = 0; e < m.reference.size(); ++e)
-        {
-          for (unsigned int i = 0; i < 2; ++i)
-            for (unsigned int j = 0; j < 2; ++j)
-              m.reference[e].dm_inverse[i][j] = reference[5 * e + 2 * i + j];
-          m.reference[e].area = reference[5 * e + 4];
-        }
+      AssertThrow(in.scalar("membrane/element_degree")
+                    == m.properties.element_degree,
+                  ExcMessage("The checkpoint's membrane has elements of "
+                             "degree "
+                             + std::to_string(
+                                 in.scalar("membrane/element_degree"))
+                             + "; the scene asks for Membrane/Element "
+                               "degree = "
+                             + std::to_string(m.properties.element_degree)
+                             + "."));
+      const auto &rest_vertex = in.doubles("membrane/rest_vertex");
+      const auto &fe_cells    = in.uints("membrane/fe_cells");
+      const auto &edge_node   = in.uints("membrane/edge_node");
+      m.vertex_node           = in.uints("membrane/vertex_node");
+      m.element_cell          = in.uints("membrane/element_cell");
+      AssertThrow(rest_vertex.size() == dim * m.vertex_node.size()
+                    && fe_cells.size() % dim == 0 && edge_node.size() % 3 == 0,
+                  damaged("its rest structure is incomplete"));
+      m.rest_vertex.resize(m.vertex_node.size());
+      for (unsigned int v = 0; v < m.rest_vertex.size(); ++v)
+        for (unsigned int d = 0; d < dim; ++d)
+          m.rest_vertex[v][d] = rest_vertex[dim * v + d];
+      m.fe_cells.resize(fe_cells.size() / dim);
+      for (unsigned int c = 0; c < m.fe_cells.size(); ++c)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            m.fe_cells[c][k] = fe_cells[dim * c + k];
+            AssertThrow(m.fe_cells[c][k] < m.rest_vertex.size(),
+                        damaged("a cell names a vertex it does not have"));
+          }
+      m.edge_node.resize(edge_node.size() / 3);
+      for (unsigned int e = 0; e < m.edge_node.size(); ++e)
+        for (unsigned int k = 0; k < 3; ++k)
+          m.edge_node[e][k] = edge_node[3 * e + k];
+      for (const unsigned int a : m.vertex_node)
+        AssertThrow(a < n, damaged("a vertex names a node it does not have"));
+      for (const auto &e : m.edge_node)
+        AssertThrow(e[2] < n && e[0] < m.rest_vertex.size()
+                      && e[1] < m.rest_vertex.size(),
+                    damaged("an edge names a node it does not have"));
+      for (const unsigned int c : m.element_cell)
+        AssertThrow(c < m.fe_cells.size(),
+                    damaged("an element names a cell it does not have"));
       const unsigned int n_elements = m.elements.size();
       AssertThrow(m.rest_size.size() == n_elements
                     && m.tension.size() == n_elements
-                    && (m.reference.empty()
-                        || m.reference.size() == n_elements),
+                    && m.element_cell.size() == n_elements,
                   damaged("its element arrays differ in length"));
+      // The finite elements from the restored rest structure (the lumped
+      // masses it recomputes are those stored).
+      m.setup_finite_elements();
     }
 
 

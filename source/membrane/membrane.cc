@@ -1,5 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <fsgmpm/membrane/membrane.h>
 
 #include <algorithm>
@@ -26,65 +28,197 @@ namespace fsgmpm
     AssertThrow(props.poisson_ratio > -1 && props.poisson_ratio < 1,
                 ExcMessage("Membrane/Poisson ratio must lie in (-1, 1)."));
 
+    AssertThrow(props.element_degree == 1 || props.element_degree == 2,
+                ExcMessage("Membrane/Element degree must be 1 or 2; got "
+                           + std::to_string(props.element_degree) + "."));
+
     // Only the vertices used by cells become nodes, numbered in order of
-    // first use so that a closed 2D loop is stored in loop order.
+    // first use (at degree 2 with the edge midpoints between them) so that
+    // a closed 2D loop is stored in loop order. The rest state is the
+    // initial one shrunk by 1 + eps0.
+    const double                         s        = 1. / (1. + props.initial_strain);
     const auto                          &vertices = mesh.get_vertices();
-    std::map<unsigned int, unsigned int> node_of_vertex;
+    std::map<unsigned int, unsigned int> rest_vertex_of;
+    auto add_node = [&](const Point<dim> &x) {
+      position.push_back(x);
+      return static_cast<unsigned int>(position.size() - 1);
+    };
     for (const auto &c : mesh.active_cell_iterators())
       {
-        std::array<unsigned int, dim> element;
+        std::array<unsigned int, dim> cell_vertices;
         for (unsigned int k = 0; k < dim; ++k)
           {
             const unsigned int v  = c->vertex_index(k);
-            auto               it = node_of_vertex.find(v);
-            if (it == node_of_vertex.end())
+            auto               it = rest_vertex_of.find(v);
+            if (it == rest_vertex_of.end())
               {
-                it = node_of_vertex.emplace(v, position.size()).first;
-                position.push_back(vertices[v]);
+                it = rest_vertex_of.emplace(v, rest_vertex.size()).first;
+                rest_vertex.push_back(Point<dim>(s * vertices[v]));
+                vertex_node.push_back(static_cast<unsigned int>(-1));
               }
-            element[k] = it->second;
+            cell_vertices[k] = it->second;
           }
-        elements.push_back(element);
+        // Vertex nodes, and at degree 2 the edge midpoints (2D: between the
+        // two vertices in the loop order).
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            const unsigned int v = cell_vertices[k];
+            if (vertex_node[v] == static_cast<unsigned int>(-1))
+              vertex_node[v] = add_node(vertices[c->vertex_index(k)]);
+            if (props.element_degree == 2 && (dim == 3 || k == 0))
+              {
+                const unsigned int w  = cell_vertices[(k + 1) % dim];
+                const unsigned int wk = (k + 1) % dim;
+                if (node_of_edge(v, w) == static_cast<unsigned int>(-1))
+                  edge_node.push_back(
+                    {{std::min(v, w),
+                      std::max(v, w),
+                      add_node(Point<dim>(0.5 * (vertices[c->vertex_index(k)]
+                                                 + vertices[c->vertex_index(wk)])))}});
+              }
+          }
+        fe_cells.push_back(cell_vertices);
       }
-    AssertThrow(!elements.empty(),
+    AssertThrow(!fe_cells.empty(),
                 ExcMessage("The membrane mesh has no elements."));
+    for (unsigned int c = 0; c < fe_cells.size(); ++c)
+      add_elements_of_cell(c);
 
     const unsigned int n = position.size();
     velocity.assign(n, Tensor<1, dim>());
     force.assign(n, Tensor<1, dim>());
-    mass.assign(n, 0.);
     cell.assign(n, static_cast<unsigned int>(-1));
-    tension.assign(elements.size(), 0.);
-    minor_tension.assign(elements.size(), 0.);
-
-    // Rest geometry = initial geometry; lumped mass rho_A |e| / dim per node.
-    for (unsigned int e = 0; e < elements.size(); ++e)
-      {
-        const auto &el = elements[e];
-        if constexpr (dim == 2)
-          {
-            const double L = position[el[0]].distance(position[el[1]]);
-            AssertThrow(L > 0,
-                        ExcMessage("Membrane element " + std::to_string(e)
-                                   + " has zero length (two coincident "
-                                     "nodes)."));
-            rest_size.push_back(L / (1. + props.initial_strain));
-          }
-        else
-          {
-            // The rest triangle is the initial one shrunk by 1 + eps0.
-            const double s = 1. / (1. + props.initial_strain);
-            reference.push_back(MembraneMechanics::make_triangle_reference(
-              Point<3>(),
-              Point<3>(s * (position[el[1]] - position[el[0]])),
-              Point<3>(s * (position[el[2]] - position[el[0]]))));
-            rest_size.push_back(reference.back().area);
-          }
-        for (const unsigned int a : el)
-          mass[a] += props.areal_mass * rest_size[e] / dim;
-      }
+    setup_finite_elements();
     find_rings();
     compute_forces();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Membrane<dim>::node_of_edge(const unsigned int v, const unsigned int w) const
+  {
+    const unsigned int a = std::min(v, w), b = std::max(v, w);
+    for (const auto &e : edge_node)
+      if (e[0] == a && e[1] == b)
+        return e[2];
+    return static_cast<unsigned int>(-1);
+  }
+
+
+
+  template <int dim>
+  void
+  Membrane<dim>::add_elements_of_cell(const unsigned int c)
+  {
+    const auto &v = fe_cells[c];
+    // Rest size of the cell: its length (2D) or area (3D).
+    double size = 0;
+    if constexpr (dim == 2)
+      size = rest_vertex[v[0]].distance(rest_vertex[v[1]]);
+    else
+      size = 0.5
+             * cross_product_3d(rest_vertex[v[1]] - rest_vertex[v[0]],
+                                rest_vertex[v[2]] - rest_vertex[v[0]])
+                 .norm();
+    AssertThrow(size > 0,
+                ExcMessage("Membrane element " + std::to_string(c)
+                           + " has zero size (coincident nodes)."));
+    std::vector<std::array<unsigned int, dim>> pieces;
+    if (properties.element_degree == 1)
+      {
+        std::array<unsigned int, dim> e;
+        for (unsigned int k = 0; k < dim; ++k)
+          e[k] = vertex_node[v[k]];
+        pieces.push_back(e);
+      }
+    else
+      {
+        std::array<unsigned int, dim> corner, middle;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            corner[k] = vertex_node[v[k]];
+            middle[k] = node_of_edge(v[k], v[(k + 1) % dim]);
+          }
+        if constexpr (dim == 2)
+          pieces = {{{corner[0], middle[0]}}, {{middle[0], corner[1]}}};
+        else
+          pieces = {{{corner[0], middle[0], middle[2]}},
+                    {{middle[0], corner[1], middle[1]}},
+                    {{middle[2], middle[1], corner[2]}},
+                    {{middle[0], middle[1], middle[2]}}};
+      }
+    for (const auto &e : pieces)
+      {
+        elements.push_back(e);
+        rest_size.push_back(size / pieces.size());
+        element_cell.push_back(c);
+        tension.push_back(0.);
+        minor_tension.push_back(0.);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Membrane<dim>::setup_finite_elements()
+  {
+    std::vector<CellData<dim - 1>> cells(fe_cells.size());
+    for (unsigned int c = 0; c < fe_cells.size(); ++c)
+      cells[c].vertices.assign(fe_cells[c].begin(), fe_cells[c].end());
+    Triangulation<dim - 1, dim> rest;
+    rest.create_triangulation(rest_vertex, cells, SubCellData());
+    fe = std::make_unique<MembraneFE<dim>>(rest,
+                                           properties.element_degree,
+                                           properties.axial_stiffness,
+                                           properties.poisson_ratio);
+
+    // The node of every support point: vertex DoFs come first on a cell,
+    // then one per edge at degree 2 (FE_SimplexP's order).
+    const unsigned int invalid = static_cast<unsigned int>(-1);
+    node_of_dof.assign(fe->n_support_points(), invalid);
+    cell_of_active_cell.assign(fe_cells.size(), invalid);
+    const auto &dof_handler = fe->get_dof_handler();
+    std::vector<types::global_dof_index> dofs(
+      dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        // create_triangulation keeps the cells' order and vertex numbers.
+        const unsigned int c = cell->index();
+        for (unsigned int k = 0; k < dim; ++k)
+          AssertThrow(std::find(fe_cells[c].begin(),
+                                fe_cells[c].end(),
+                                cell->vertex_index(k))
+                        != fe_cells[c].end(),
+                      ExcInternalError());
+        cell_of_active_cell[cell->active_cell_index()] = c;
+        for (unsigned int k = 0; k < dim; ++k)
+          node_of_dof[dofs[k]] = vertex_node[cell->vertex_index(k)];
+        // Degree 2: the edge DoFs follow, one per line of the reference
+        // cell (2D: the cable's interior DoF).
+        if (properties.element_degree == 2)
+          for (unsigned int l = 0; l < (dim == 2 ? 1 : 3); ++l)
+            {
+              const unsigned int node =
+                dim == 2 ? node_of_edge(cell->vertex_index(0),
+                                        cell->vertex_index(1)) :
+                           node_of_edge(cell->line(l)->vertex_index(0),
+                                        cell->line(l)->vertex_index(1));
+              AssertThrow(node != invalid, ExcInternalError());
+              node_of_dof[dofs[dim + l]] = node;
+            }
+      }
+    for (const unsigned int a : node_of_dof)
+      AssertThrow(a != invalid && a < position.size(), ExcInternalError());
+
+    // Lumped masses of the support points (HRZ, positive at every node).
+    const std::vector<double> dof_mass = fe->lumped_masses(properties.areal_mass);
+    mass.assign(position.size(), 0.);
+    for (unsigned int i = 0; i < dof_mass.size(); ++i)
+      mass[node_of_dof[i]] = dof_mass[i];
   }
 
 
@@ -93,36 +227,19 @@ namespace fsgmpm
   void
   Membrane<dim>::compute_forces()
   {
-    for (auto &f : force)
-      f = Tensor<1, dim>();
-    const double EA = properties.axial_stiffness;
+    dof_position.resize(node_of_dof.size());
+    for (unsigned int i = 0; i < node_of_dof.size(); ++i)
+      dof_position[i] = position[node_of_dof[i]];
+    fe->internal_forces(dof_position, dof_force, &cell_stress);
+    for (unsigned int i = 0; i < node_of_dof.size(); ++i)
+      force[node_of_dof[i]] = dof_force[i];
+    std::vector<std::array<double, 2>> stress_of_cell(fe_cells.size());
+    for (unsigned int k = 0; k < cell_stress.size(); ++k)
+      stress_of_cell[cell_of_active_cell[k]] = cell_stress[k];
     for (unsigned int e = 0; e < elements.size(); ++e)
       {
-        const auto &el = elements[e];
-        if constexpr (dim == 2)
-          {
-            Tensor<1, 2> f1, f2;
-            tension[e] = MembraneMechanics::cable_forces(
-              position[el[0]], position[el[1]], rest_size[e], EA, f1, f2);
-            force[el[0]] += f1;
-            force[el[1]] += f2;
-          }
-        else
-          {
-            std::array<Tensor<1, 3>, 3> f;
-            const auto                  r
-              = MembraneMechanics::triangle_forces(reference[e],
-                                                   position[el[0]],
-                                                   position[el[1]],
-                                                   position[el[2]],
-                                                   EA,
-                                                   properties.poisson_ratio,
-                                                   f);
-            tension[e]       = r.major_principal;
-            minor_tension[e] = r.minor_principal;
-            for (unsigned int k = 0; k < 3; ++k)
-              force[el[k]] += f[k];
-          }
+        tension[e]       = stress_of_cell[element_cell[e]][0];
+        minor_tension[e] = stress_of_cell[element_cell[e]][1];
       }
     // Ground contact: a normal penalty force on the nodes below the ground
     // (frictionless: no tangential force).
@@ -157,37 +274,100 @@ namespace fsgmpm
       }
     else
       {
-        unsigned int n_new = 0;
-        for (unsigned int e = 0; e < elements.size(); ++e)
+        const unsigned int n_before = n_nodes();
+        const unsigned int per_cell = properties.element_degree;
+        // The elements of a cell are consecutive (loop order).
+        for (unsigned int e = 0; e < elements.size(); e += per_cell)
           {
-            const unsigned int a = elements[e][0], b = elements[e][1];
-            if (position[a].distance(position[b]) <= max_length)
+            bool too_long = false;
+            for (unsigned int k = 0; k < per_cell; ++k)
+              too_long = too_long
+                         || position[elements[e + k][0]].distance(
+                              position[elements[e + k][1]])
+                              > max_length;
+            if (!too_long)
               continue;
-            // Midpoint node: half of the element's mass moves to it, the rest
-            // lengths halve (same strain, same tension).
-            const unsigned int m = position.size();
-            position.push_back(0.5 * (position[a] + position[b]));
-            velocity.push_back(0.5 * (velocity[a] + velocity[b]));
-            force.push_back(Tensor<1, dim>());
-            cell.push_back(unknown_cell);
-            const double element_mass = properties.areal_mass * rest_size[e];
-            mass[a] -= 0.25 * element_mass;
-            mass[b] -= 0.25 * element_mass;
-            mass.push_back(0.5 * element_mass);
-
-            rest_size[e] *= 0.5;
-            elements[e][1] = m;
-            std::array<unsigned int, dim> piece{};
-            piece[0] = m;
-            piece[1] = b;
-            elements.insert(elements.begin() + e + 1, piece);
-            rest_size.insert(rest_size.begin() + e + 1, rest_size[e]);
-            tension.insert(tension.begin() + e + 1, tension[e]);
-            minor_tension.insert(minor_tension.begin() + e + 1, 0.);
-            ++n_new;
-            --e; // the first half may still be too long
+            const unsigned int c = element_cell[e];
+            const unsigned int v0 = fe_cells[c][0], v1 = fe_cells[c][1];
+            const unsigned int a = elements[e][0],
+                               b = elements[e + per_cell - 1][1];
+            auto add_node = [&](const Point<dim>     &x,
+                                const Tensor<1, dim> &v) {
+              position.push_back(x);
+              velocity.push_back(v);
+              force.push_back(Tensor<1, dim>());
+              cell.push_back(unknown_cell);
+              return static_cast<unsigned int>(position.size() - 1);
+            };
+            // The new rest vertex at the middle of the rest cell; the cell
+            // becomes (v0, m) and a new cell (m, v1) follows it.
+            const unsigned int m = rest_vertex.size();
+            rest_vertex.push_back(
+              Point<dim>(0.5 * (rest_vertex[v0] + rest_vertex[v1])));
+            std::vector<std::array<unsigned int, dim>> pieces;
+            if (per_cell == 1)
+              {
+                // Degree 1: the new node at the chord's midpoint.
+                vertex_node.push_back(
+                  add_node(Point<dim>(0.5 * (position[a] + position[b])),
+                           0.5 * (velocity[a] + velocity[b])));
+                pieces = {{{a, vertex_node[m]}}, {{vertex_node[m], b}}};
+              }
+            else
+              {
+                // Degree 2: the midpoint node becomes the vertex; the new
+                // edge midpoints take the quadratic at 1/4 and 3/4,
+                // x(1/4) = (3 x0 - x1)/8 + 3 xm/4.
+                const unsigned int mid = elements[e][1];
+                vertex_node.push_back(mid);
+                auto quarter = [](const Tensor<1, dim> &x0,
+                                  const Tensor<1, dim> &x1,
+                                  const Tensor<1, dim> &xm) {
+                  return Tensor<1, dim>(0.375 * x0 - 0.125 * x1 + 0.75 * xm);
+                };
+                const unsigned int q0 = add_node(
+                  Point<dim>(quarter(position[a], position[b], position[mid])),
+                  quarter(velocity[a], velocity[b], velocity[mid]));
+                const unsigned int q1 = add_node(
+                  Point<dim>(quarter(position[b], position[a], position[mid])),
+                  quarter(velocity[b], velocity[a], velocity[mid]));
+                edge_node.erase(std::find_if(
+                  edge_node.begin(), edge_node.end(), [&](const auto &x) {
+                    return x[0] == std::min(v0, v1) && x[1] == std::max(v0, v1);
+                  }));
+                edge_node.push_back({{std::min(v0, m), std::max(v0, m), q0}});
+                edge_node.push_back({{std::min(m, v1), std::max(m, v1), q1}});
+                pieces = {{{a, q0}}, {{q0, mid}}, {{mid, q1}}, {{q1, b}}};
+              }
+            const unsigned int c_new = fe_cells.size();
+            fe_cells[c]              = {{v0, m}};
+            fe_cells.push_back({{m, v1}});
+            // Replace the cell's elements by the two halves' in loop order.
+            const double piece = rest_size[e] * per_cell / pieces.size();
+            const double T    = tension[e];
+            elements.erase(elements.begin() + e,
+                           elements.begin() + e + per_cell);
+            rest_size.erase(rest_size.begin() + e,
+                            rest_size.begin() + e + per_cell);
+            element_cell.erase(element_cell.begin() + e,
+                               element_cell.begin() + e + per_cell);
+            tension.erase(tension.begin() + e, tension.begin() + e + per_cell);
+            minor_tension.erase(minor_tension.begin() + e,
+                                minor_tension.begin() + e + per_cell);
+            for (unsigned int k = 0; k < pieces.size(); ++k)
+              {
+                elements.insert(elements.begin() + e + k, pieces[k]);
+                rest_size.insert(rest_size.begin() + e + k, piece);
+                element_cell.insert(element_cell.begin() + e + k,
+                                    k < pieces.size() / 2 ? c : c_new);
+                tension.insert(tension.begin() + e + k, T);
+                minor_tension.insert(minor_tension.begin() + e + k, 0.);
+              }
+            e -= per_cell; // the first half may still be too long
           }
-        return n_new;
+        if (n_nodes() > n_before)
+          setup_finite_elements();
+        return n_nodes() - n_before;
       }
   }
 
@@ -391,6 +571,11 @@ namespace fsgmpm
     std::vector<double> loop_stiffness;
     if (slip)
       loop_stiffness = loop_axial_stiffness();
+    // Degree 2: the elements are the cells' halves (quarters in 3D), whose
+    // straight-element bounds below the quadratic cell exceeds; the row
+    // sums of the P2 stiffness are 4/3 of those of its linear sub-elements
+    // (exactly, for the cable and for the Laplacian on any triangle).
+    const double degree_factor = properties.element_degree == 2 ? 4. / 3. : 1.;
     for (unsigned int e = 0; e < elements.size(); ++e)
       if (dim == 3 && !slip)
         {
@@ -426,7 +611,7 @@ namespace fsgmpm
           const double area = two_area / 2;
           for (unsigned int i = 0; i < 3; ++i)
             k[el[i]]
-              += (area * g[i] * g_sum)
+              += (degree_factor * area * g[i] * g_sum)
                  * (0.75 * (1 + properties.poisson_ratio) * EA * in_plane
                     + std::max(tension[e], 0.) * unit_symmetric_tensor<dim>());
         }
@@ -450,9 +635,10 @@ namespace fsgmpm
                   axial[dim - 1][dim - 1] = tt[dim - 1][dim - 1];
               }
             const SymmetricTensor<2, dim> k_edge
-              = (EA / l) * axial
-                + (std::max(tension[e], 0.) / l)
-                    * (unit_symmetric_tensor<dim>() - tt);
+              = degree_factor
+                * ((EA / l) * axial
+                   + (std::max(tension[e], 0.) / l)
+                       * (unit_symmetric_tensor<dim>() - tt));
             k[el[i]] += k_edge;
             k[el[j]] += k_edge;
             if (dim == 2)

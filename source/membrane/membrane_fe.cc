@@ -68,6 +68,32 @@ namespace fsgmpm
     // support points of degree 2 are the edge midpoints.
     rest_points.resize(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, rest_points);
+
+    // The rest geometry's shape-function derivatives along an orthonormal
+    // rest frame, and the JxW values.
+    FEValues<dim - 1, dim>               fe_values(mapping,
+                                     fe,
+                                     quadrature,
+                                     update_gradients | update_jacobians
+                                       | update_JxW_values);
+    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n_dofs);
+    n_q_points = quadrature.size();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dofs);
+        cell_dofs.insert(cell_dofs.end(), dofs.begin(), dofs.end());
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const auto t = tangent_frame<dim>(fe_values.jacobian(q));
+            JxW.push_back(fe_values.JxW(q));
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              for (unsigned int a = 0; a < dim - 1; ++a)
+                tangent_derivative.push_back(fe_values.shape_grad(i, q)
+                                             * t[a]);
+          }
+      }
   }
 
 
@@ -76,43 +102,54 @@ namespace fsgmpm
   std::vector<Tensor<1, dim>>
   MembraneFE<dim>::internal_forces(const std::vector<Point<dim>> &x) const
   {
+    std::vector<Tensor<1, dim>> force;
+    internal_forces(x, force, nullptr);
+    return force;
+  }
+
+
+
+  template <int dim>
+  void
+  MembraneFE<dim>::internal_forces(
+    const std::vector<Point<dim>>       &x,
+    std::vector<Tensor<1, dim>>         &force,
+    std::vector<std::array<double, 2>> *cell_stress) const
+  {
     AssertThrow(x.size() == n_support_points(),
                 ExcMessage("MembraneFE: one position per support point "
                            "is needed."));
-    std::vector<Tensor<1, dim>>          force(n_support_points());
-    FEValues<dim - 1, dim>               fe_values(mapping,
-                                     fe,
-                                     quadrature,
-                                     update_gradients | update_jacobians
-                                       | update_JxW_values);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    // dN[i][a] = grad N_i . t_a at the current quadrature point.
-    std::vector<std::array<double, dim - 1>> dN(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    force.assign(n_support_points(), Tensor<1, dim>());
+    const unsigned int n_dofs  = fe.n_dofs_per_cell();
+    const unsigned int n_cells = triangulation.n_active_cells();
+    if (cell_stress)
+      cell_stress->assign(n_cells, {{0., 0.}});
+    for (unsigned int c = 0; c < n_cells; ++c)
       {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dofs);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
+        const types::global_dof_index *dofs = &cell_dofs[c * n_dofs];
+        double                         area = 0;
+        std::array<double, 2>          stress{{0., 0.}};
+        for (unsigned int q = 0; q < n_q_points; ++q)
           {
-            const auto t = tangent_frame<dim>(fe_values.jacobian(q));
-            // g_a = F t_a = sum_i x_i (grad N_i . t_a), and the tangential
-            // derivatives dN_i/dt_a.
+            const unsigned int cq = c * n_q_points + q;
+            // dN[i][a] = grad N_i . t_a on the rest surface.
+            const double *dN = &tangent_derivative[cq * n_dofs * (dim - 1)];
+            // g_a = F t_a = sum_i x_i dN_i/dt_a.
             std::array<Tensor<1, dim>, dim - 1> g;
-            for (unsigned int i = 0; i < dofs.size(); ++i)
+            for (unsigned int i = 0; i < n_dofs; ++i)
               for (unsigned int a = 0; a < dim - 1; ++a)
-                {
-                  dN[i][a] = fe_values.shape_grad(i, q) * t[a];
-                  g[a] += dN[i][a] * x[dofs[i]];
-                }
+                g[a] += dN[i * (dim - 1) + a] * x[dofs[i]];
             // P t_b: the first Piola-Kirchhoff stress against the rest
             // tangents, f_i = -int sum_b (P t_b) dN_i/dt_b dA.
             std::array<Tensor<1, dim>, dim - 1> P;
+            std::array<double, 2>               principal{{0., 0.}};
             if constexpr (dim == 2)
               {
                 const double stretch = g[0].norm();
                 const double T       = EA * std::max(0., stretch - 1.);
                 if (stretch > 0)
                   P[0] = (T / stretch) * g[0];
+                principal[0] = T;
               }
             else
               {
@@ -120,13 +157,39 @@ namespace fsgmpm
                   = MembraneMechanics::cut_off_svk_stress(g[0], g[1], EA, nu);
                 P[0] = S[0] * g[0] + S[2] * g[1];
                 P[1] = S[2] * g[0] + S[1] * g[1];
+                if (cell_stress)
+                  {
+                    // sigma = G S G^T / J (G = [g0 g1]) has the nonzero
+                    // eigenvalues of S C / J, C = G^T G (similar to the
+                    // symmetric C^1/2 S C^1/2): from its trace and
+                    // determinant.
+                    const double C00 = g[0] * g[0], C11 = g[1] * g[1],
+                                 C01 = g[0] * g[1];
+                    const double det_C = C00 * C11 - C01 * C01;
+                    if (det_C > 1e-24 * (C00 + C11) * (C00 + C11))
+                      {
+                        const double J = std::sqrt(det_C);
+                        const double tr
+                          = (S[0] * C00 + 2 * S[2] * C01 + S[1] * C11) / J;
+                        const double det
+                          = (S[0] * S[1] - S[2] * S[2]) * det_C / (J * J);
+                        const double root =
+                          std::sqrt(std::max(0., 0.25 * tr * tr - det));
+                        principal = {{0.5 * tr + root, 0.5 * tr - root}};
+                      }
+                  }
               }
-            for (unsigned int i = 0; i < dofs.size(); ++i)
+            const double w = JxW[cq];
+            for (unsigned int i = 0; i < n_dofs; ++i)
               for (unsigned int b = 0; b < dim - 1; ++b)
-                force[dofs[i]] -= fe_values.JxW(q) * dN[i][b] * P[b];
+                force[dofs[i]] -= (w * dN[i * (dim - 1) + b]) * P[b];
+            area += w;
+            stress[0] += w * principal[0];
+            stress[1] += w * principal[1];
           }
+        if (cell_stress)
+          (*cell_stress)[c] = {{stress[0] / area, stress[1] / area}};
       }
-    return force;
   }
 
 

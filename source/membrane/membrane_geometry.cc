@@ -215,6 +215,14 @@ namespace fsgmpm
                         "0.5",
                         Patterns::Double(0, 1e4),
                         "Mass per membrane area (kg/m^2, > 0, at most 1e4).");
+      prm.declare_entry("Element degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the membrane's finite elements "
+                        "(FE_SimplexP on the membrane's cells): 1 (straight "
+                        "cables and flat triangles) or 2 (quadratic: one more "
+                        "node on every cell edge, so twice the nodes along "
+                        "the membrane for the same Element size).");
     }
     prm.leave_subsection();
   }
@@ -243,6 +251,7 @@ namespace fsgmpm
     properties.poisson_ratio   = prm.get_double("Poisson ratio");
     properties.areal_mass      = prm.get_double("Areal mass");
     properties.initial_strain  = prm.get_double("Initial strain");
+    properties.element_degree  = prm.get_integer("Element degree");
     tangential_slip            = (prm.get("Tangential coupling") == "slip");
     {
       const std::string g = Utilities::trim(prm.get("Ground level"));

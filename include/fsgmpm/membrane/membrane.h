@@ -6,10 +6,11 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
-#include <fsgmpm/membrane/membrane_mechanics.h>
+#include <fsgmpm/membrane/membrane_fe.h>
 
 #include <array>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace fsgmpm
@@ -25,20 +26,28 @@ namespace fsgmpm
     /// Pre-strain: the rest size is the initial size / (1 + eps0) (2D
     /// length, 3D each edge), so eps0 > 0 starts the membrane in tension.
     double initial_strain = 0;
+    /// Polynomial degree of the membrane elements (FE_SimplexP, 1 or 2).
+    unsigned int element_degree = 1;
   };
 
   /**
    * A geomembrane as a finite-element structure inside the MPM frame (FEM-MPM
-   * coupling, paper Section 2.1.2): 2-node tension-only cables in 2D, 3-node
-   * membrane triangles in 3D. Its nodes carry lumped mass and velocity and
-   * exchange mass, momentum and their element forces with the background
-   * grid like material points (Stages::membrane_*); the element forces come
-   * from the current node positions against the rest geometry (stateless:
-   * slack is never forgotten and the strain cannot drift).
+   * coupling, paper Section 2.1.2): tension-only cables in 2D, membrane
+   * triangles in 3D, on deal.II's FE machinery (MembraneFE: FE_SimplexP of
+   * degree 1 or 2 on the codim-1 triangulation, forces by quadrature). Its
+   * nodes are the elements' support points; they carry lumped mass and
+   * velocity and exchange mass, momentum and their element forces with the
+   * background grid like material points (Stages::membrane_*), every support
+   * point alike. The element forces come from the current node positions
+   * against the rest geometry (total Lagrangian and stateless: slack is never
+   * forgotten and the strain cannot drift).
    *
    * The geometry enters as a deal.II codimension-one triangulation
-   * (Triangulation<dim-1, dim>); its vertices become the nodes, its cells the
-   * elements, and its initial shape is the stress-free rest state.
+   * (Triangulation<dim-1, dim>); its initial shape, shrunk by 1 + initial
+   * strain, is the rest state. For the geometric work (loops, slip,
+   * splitting, time-step bounds, output) the membrane is also a set of
+   * straight "elements" between the nodes: the cells themselves at degree 1,
+   * their halves (2D) or quarter triangles (3D) at degree 2.
    */
   template <int dim>
   class Membrane
@@ -48,6 +57,19 @@ namespace fsgmpm
 
     Membrane(const Triangulation<dim - 1, dim> &mesh,
              const MembraneProperties          &properties);
+
+    /// (Re)builds the finite elements from the rest structure (rest_vertex,
+    /// fe_cells, vertex_node, edge_node): after a split, or after the
+    /// structure was restored from a checkpoint.
+    void
+    setup_finite_elements();
+
+    /// The membrane's finite elements.
+    const MembraneFE<dim> &
+    get_fe() const
+    {
+      return *fe;
+    }
 
     unsigned int
     n_nodes() const
@@ -61,16 +83,21 @@ namespace fsgmpm
     }
 
     /// Element forces on the nodes (force) and element tensions from the
-    /// current positions: cable T = EA max(0, l/L - 1) in 2D; triangles
-    /// with the compression cut-off of Eqs. (9)-(10) in 3D.
+    /// current positions: cable T = EA max(0, lambda - 1) in 2D; the
+    /// Saint Venant-Kirchhoff membrane with the compression cut-off of
+    /// Eqs. (9)-(10) in 3D (MembraneFE). The tension of an element is its
+    /// cell's, averaged over the quadrature points.
     void
     compute_forces();
 
-    /// 2D: split every cable longer than @p max_length at its midpoint (rest
-    /// length and mass shared so that strain and total mass are unchanged),
-    /// so the fluid cannot leak between nodes. Returns the number of new
-    /// nodes; their cell is set to @p unknown_cell. 3D: returns the number
-    /// of triangles with an edge longer than max_length (not split).
+    /// 2D: split every cell with an element longer than @p max_length into
+    /// two (the rest cell halved, so that strain and total mass are
+    /// unchanged), so the fluid cannot leak between nodes. The new support
+    /// points take the cell's interpolated position and velocity (the
+    /// midpoint at degree 1, the quadratic at degree 2); the lumped masses
+    /// are recomputed. Returns the number of new nodes; their cell is set to
+    /// @p unknown_cell. 3D: returns the number of elements with an edge
+    /// longer than max_length (not split).
     unsigned int
     split_long_elements(const double       max_length,
                         const unsigned int unknown_cell);
@@ -200,16 +227,47 @@ namespace fsgmpm
     std::vector<std::vector<unsigned int>> rings;
     std::vector<std::vector<double>>       ring_rest_length;
 
-    // --- elements --------------------------------------------------------
+    // --- elements (straight pieces between nodes, see above) -------------
     std::vector<std::array<unsigned int, dim>> elements;
     /// Rest length (2D) or rest area (3D).
     std::vector<double> rest_size;
-    /// 3D: the rest frame of each triangle.
-    std::vector<MembraneMechanics::TriangleReference> reference;
     /// Cable tension (2D) or major principal membrane stress (3D), N/m.
     std::vector<double> tension;
     /// 3D: minor principal membrane stress after the cut-off (N/m).
     std::vector<double> minor_tension;
+
+    // --- rest structure of the finite elements ----------------------------
+    /// Rest positions of the mesh vertices.
+    std::vector<Point<dim>> rest_vertex;
+    /// The cells by their rest vertices.
+    std::vector<std::array<unsigned int, dim>> fe_cells;
+    /// The node at each rest vertex.
+    std::vector<unsigned int> vertex_node;
+    /// Degree 2: the node at the midpoint of each cell edge, as
+    /// {vertex, vertex, node} with the smaller vertex first.
+    std::vector<std::array<unsigned int, 3>> edge_node;
+    /// The cell (index into fe_cells) each element lies in.
+    std::vector<unsigned int> element_cell;
+
+  private:
+    std::unique_ptr<MembraneFE<dim>> fe;
+    /// The node of each support point (DoF) of fe.
+    std::vector<unsigned int> node_of_dof;
+    /// fe_cells index of each active cell of fe.
+    std::vector<unsigned int> cell_of_active_cell;
+    /// Scratch of compute_forces().
+    std::vector<Point<dim>>            dof_position;
+    std::vector<Tensor<1, dim>>        dof_force;
+    std::vector<std::array<double, 2>> cell_stress;
+
+    /// The elements of cell c (degree 1: the cell; degree 2: its halves or
+    /// quarters), appended to elements with their rest sizes.
+    void
+    add_elements_of_cell(const unsigned int c);
+
+    /// The node at the midpoint of edge (v, w); invalid if none.
+    unsigned int
+    node_of_edge(const unsigned int v, const unsigned int w) const;
   };
 } // namespace fsgmpm
 

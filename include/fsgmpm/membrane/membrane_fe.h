@@ -12,6 +12,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <array>
 #include <vector>
 
 namespace fsgmpm
@@ -20,7 +21,7 @@ namespace fsgmpm
 
   /**
    * The membrane's internal forces on deal.II's finite-element machinery
-   * (issue 17, first part; not yet coupled to the grid): FE_SimplexP of
+   * (issue 17): FE_SimplexP of
    * degree 1 or 2 on the membrane's codim-1 triangulation (cables: lines in
    * 2D; surfaces: triangles in 3D), total Lagrangian on the rest geometry,
    * forces by FEValues quadrature. The node values are the current
@@ -37,6 +38,11 @@ namespace fsgmpm
    *   cut-off of Eqs. (9)-(10) on S, and f_i = -int S_ab (F t_a)
    *   (grad N_i . t_b) dA.
    * The forces are those ON the support points (-dW/dx).
+   *
+   * Total Lagrangian on a fixed rest geometry: the shape-function
+   * derivatives along the rest tangents and the JxW values never change, so
+   * they are computed once by FEValues in the constructor and the forces
+   * are then pure arithmetic on the current positions.
    */
   template <int dim>
   class MembraneFE
@@ -68,6 +74,18 @@ namespace fsgmpm
     std::vector<Tensor<1, dim>>
     internal_forces(const std::vector<Point<dim>> &x) const;
 
+    /// As above, into @p force (resized). If @p cell_stress is given, it
+    /// receives per active cell (active_cell_index order) the principal
+    /// Cauchy membrane stresses {major, minor} (N/m) averaged over the
+    /// cell's quadrature points with their weights: the cable tension
+    /// EA max(0, lambda - 1) in 2D (minor 0); in 3D the eigenvalues of
+    /// sigma = F S F^T / J in the current tangent plane, after the
+    /// cut-off.
+    void
+    internal_forces(const std::vector<Point<dim>>       &x,
+                    std::vector<Tensor<1, dim>>         &force,
+                    std::vector<std::array<double, 2>> *cell_stress) const;
+
     /// Lumped mass of each support point for the areal mass @p mu (kg/m^2,
     /// kg/m for cables): the diagonal of the consistent mass matrix scaled
     /// to the element's mass (HRZ lumping: positive at every node, also at
@@ -81,6 +99,12 @@ namespace fsgmpm
       return dof_handler;
     }
 
+    unsigned int
+    get_degree() const
+    {
+      return fe.degree;
+    }
+
   private:
     Triangulation<dim - 1, dim> triangulation;
     FE_SimplexP<dim - 1, dim>   fe;
@@ -89,6 +113,14 @@ namespace fsgmpm
     DoFHandler<dim - 1, dim>    dof_handler;
     std::vector<Point<dim>>     rest_points;
     double                      EA, nu;
+
+    // Precomputed on the rest geometry, per active cell c and quadrature
+    // point q (n_q per cell): the cell's DoFs, JxW and, per DoF i and rest
+    // tangent a, dN_i/dt_a at [((c n_q + q) n_dofs + i) (dim - 1) + a].
+    unsigned int                         n_q_points;
+    std::vector<types::global_dof_index> cell_dofs;
+    std::vector<double>                  JxW;
+    std::vector<double>                  tangent_derivative;
   };
 } // namespace fsgmpm
 
