@@ -26,10 +26,12 @@
 #include <deal.II/grid/tria.h>
 
 #include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/membrane/membrane_mechanics.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <limits>
 
 using namespace fsgmpm;
@@ -502,4 +504,119 @@ TEST(MembraneState, TriangleStiffnessBoundsTheTimeStep)
                     1e7 * std::sqrt(m.mass[a] / props.areal_mass),
                     1e-6 * 1e7);
     }
+}
+
+// Issue 17: the Membrane's elements are MembraneFE. (a) Degree 1: the nodal
+// forces of a deformed ring equal the hand-written cables' (MembraneMechanics,
+// the reference kept for this test) to round-off (measured 5.7e-15 of the
+// largest force; asserted 1e-13), and the cable tensions too.
+TEST(MembraneState, DegreeOneForcesEqualTheHandWrittenCables)
+{
+  Membrane<2> m = circle(24, 1.);
+  for (unsigned int a = 0; a < m.n_nodes(); ++a)
+    {
+      const Point<2> x = m.position[a];
+      m.position[a]    = Point<2>(1.3 * x[0] + 0.1 * x[1] * x[1],
+                               0.9 * x[1] + 0.05 * std::sin(3 * x[0]));
+    }
+  m.compute_forces();
+  std::vector<Tensor<1, 2>> expected(m.n_nodes());
+  double                    largest = 0;
+  for (unsigned int e = 0; e < m.n_elements(); ++e)
+    {
+      Tensor<1, 2> f1, f2;
+      const double T = MembraneMechanics::cable_forces(
+        m.position[m.elements[e][0]],
+        m.position[m.elements[e][1]],
+        m.rest_size[e],
+        m.properties.axial_stiffness,
+        f1,
+        f2);
+      expected[m.elements[e][0]] += f1;
+      expected[m.elements[e][1]] += f2;
+      EXPECT_NEAR(m.tension[e], T, 1e-13 * m.properties.axial_stiffness);
+    }
+  for (const auto &f : expected)
+    largest = std::max(largest, f.norm());
+  double worst = 0;
+  for (unsigned int a = 0; a < m.n_nodes(); ++a)
+    worst = std::max(worst, (m.force[a] - expected[a]).norm());
+  std::cout << "degree 1 against the hand-written cables: "
+            << worst / largest << " of the largest force" << std::endl;
+  EXPECT_LT(worst, 1e-13 * largest);
+}
+
+// (b) Degree 2 on a ring: a node at every vertex and cell middle, in loop
+// order (one closed loop of twice the elements), the lumped masses sum to
+// the membrane's mass; a uniform stretch by 1 + s gives the tension EA s on
+// every cell (exact for the straight cells) and no net force. (c) Splitting
+// a stretched degree-2 cell keeps the mass, puts the new nodes on the
+// cell's quadratic at 1/4 and 3/4 (on the straight chord here), and keeps
+// the loop closed; exact to 1e-12 relative.
+TEST(MembraneState, DegreeTwoRingStructureStretchAndSplit)
+{
+  const unsigned int n = 12;
+  std::vector<Point<2>>    vertices;
+  std::vector<CellData<1>> cells(n);
+  for (unsigned int i = 0; i < n; ++i)
+    {
+      vertices.emplace_back(std::cos(2 * M_PI * i / n),
+                            std::sin(2 * M_PI * i / n));
+      cells[i].vertices = {i, (i + 1) % n};
+    }
+  Triangulation<1, 2> mesh;
+  mesh.create_triangulation(vertices, cells, SubCellData());
+  MembraneProperties props;
+  props.axial_stiffness = 1e5;
+  props.areal_mass      = 0.5;
+  props.element_degree  = 2;
+  Membrane<2> m(mesh, props);
+  ASSERT_EQ(m.n_nodes(), 2 * n);
+  ASSERT_EQ(m.n_elements(), 2 * n);
+  EXPECT_TRUE(m.is_closed_loop());
+  const double length = 2 * n * std::sin(M_PI / n);
+  EXPECT_NEAR(total(m.mass), 0.5 * length, 1e-12 * length);
+  EXPECT_NEAR(m.enclosed_area(), 0.5 * n * std::sin(2 * M_PI / n), 1e-12);
+
+  const double s = 1e-3;
+  for (auto &x : m.position)
+    x *= 1 + s;
+  m.compute_forces();
+  Tensor<1, 2> net;
+  for (unsigned int a = 0; a < m.n_nodes(); ++a)
+    net += m.force[a];
+  for (unsigned int e = 0; e < m.n_elements(); ++e)
+    EXPECT_NEAR(m.tension[e], 1e5 * s, 1e-9 * 1e5 * s);
+  EXPECT_LT(net.norm(), 1e-10 * 1e5 * s);
+
+  // Pull the end vertex of the first cell 20% of the cell length further
+  // along its chord, so that only that cell is too long, then split it.
+  const unsigned int a = m.elements[0][0], mid = m.elements[0][1],
+                     b = m.elements[1][1];
+  const Tensor<1, 2> chord = m.position[b] - m.position[a];
+  m.position[b] += 0.2 * chord;
+  const Point<2>     x0 = m.position[a], xm = m.position[mid],
+                 x2          = m.position[b];
+  const double       mass_before = total(m.mass);
+  const unsigned int added = m.split_long_elements(0.55 * chord.norm(), 0);
+  EXPECT_EQ(added, 2u);
+  EXPECT_EQ(m.n_nodes(), 2 * n + 2);
+  EXPECT_EQ(m.n_elements(), 2 * n + 2);
+  EXPECT_TRUE(m.is_closed_loop());
+  EXPECT_NEAR(total(m.mass), mass_before, 1e-12 * mass_before);
+  // The new nodes, in loop order, on the cell's quadratic at 1/4 and 3/4:
+  // x(1/4) = (3 x0 - x2)/8 + 3 xm/4.
+  EXPECT_EQ(m.elements[0][0], a);
+  EXPECT_EQ(m.elements[1][1], mid);
+  EXPECT_EQ(m.elements[3][1], b);
+  const Point<2> q0 = m.position[m.elements[0][1]];
+  const Point<2> q1 = m.position[m.elements[2][1]];
+  EXPECT_LT(q0.distance(Point<2>(0.375 * x0 - 0.125 * x2 + 0.75 * xm)),
+            1e-12);
+  EXPECT_LT(q1.distance(Point<2>(0.375 * x2 - 0.125 * x0 + 0.75 * xm)),
+            1e-12);
+  // The other cells keep their tension.
+  m.compute_forces();
+  for (unsigned int e = 6; e < m.n_elements(); ++e)
+    EXPECT_NEAR(m.tension[e], 1e5 * s, 1e-9 * 1e5 * s);
 }
