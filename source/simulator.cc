@@ -237,19 +237,18 @@ namespace fsgmpm
                                + "/Shape = membrane needs a membrane given "
                                  "as an ellipse or polygon."));
 
-    // The quadratic membrane (MembraneFE of degree 2) computes its forces,
-    // masses and splits, but its rest cells are straight: a curved membrane
-    // whose middle nodes lie on the curve then carries a spurious strain of
-    // about (kappa h)^2/24, which for the geotube at 16 cm (1.7e-4) is the
-    // size of its real strain (2e-4), and the coupled run gains energy
-    // (doc/membrane_validation.md, section "Quadratic membrane elements").
-    AssertThrow(description.properties.element_degree == 1,
-                ExcMessage("Membrane/Element degree = 2 is not usable in a "
-                           "coupled run yet: the quadratic elements have "
-                           "straight rest cells, so a curved membrane carries "
-                           "a spurious strain as large as its real one and "
-                           "the run gains energy (issue 17). Use "
-                           "Membrane/Element degree = 1."));
+    // The frictionless slip places the nodes by chord lengths (degree-1
+    // geometry); on quadratic cells that is off by O((kappa h)^2) against
+    // the cells' own stretch, a strain as large as the geotube's real one
+    // (2e-4 at 16 cm), and the coupled run gains energy
+    // (doc/membrane_validation.md, "Quadratic membrane elements").
+    AssertThrow(description.properties.element_degree == 1
+                  || !description.tangential_slip,
+                ExcMessage("Membrane/Element degree = 2 cannot be combined "
+                           "with Membrane/Tangential coupling = slip (the "
+                           "slip spreads the stretch by chord lengths, which "
+                           "quadratic elements do not follow); use the "
+                           "paper's no-slip coupling, or degree 1."));
     Triangulation<dim - 1, dim> mesh;
     description.make_mesh(h, membrane_z_range, mesh);
     membrane = std::make_unique<Membrane<dim>>(mesh, description.properties);

@@ -119,6 +119,11 @@ namespace fsgmpm
       out.put("membrane/fe_cells", fe_cells);
       out.put("membrane/vertex_node", m.vertex_node);
       out.put("membrane/edge_node", edge_node);
+      std::vector<double> edge_rest_point;
+      for (const auto &x : m.edge_rest_point)
+        for (unsigned int d = 0; d < dim; ++d)
+          edge_rest_point.push_back(x[d]);
+      out.put("membrane/edge_rest_point", edge_rest_point);
       out.put("membrane/element_cell", m.element_cell);
       out.put("membrane/tension", m.tension);
       out.put("membrane/minor_tension", m.minor_tension);
@@ -175,19 +180,17 @@ namespace fsgmpm
             AssertThrow(m.elements[e][k] < n,
                         damaged("an element names a node it does not have"));
           }
-      m.rest_size           = in.doubles("membrane/rest_size");
-      m.tension             = in.doubles("membrane/tension");
-      m.minor_tension       = in.doubles("membrane/minor_tension");
-      AssertThrow(in.scalar("membrane/element_degree")
-                    == m.properties.element_degree,
-                  ExcMessage("The checkpoint's membrane has elements of "
-                             "degree "
-                             + std::to_string(
-                                 in.scalar("membrane/element_degree"))
-                             + "; the scene asks for Membrane/Element "
-                               "degree = "
-                             + std::to_string(m.properties.element_degree)
-                             + "."));
+      m.rest_size     = in.doubles("membrane/rest_size");
+      m.tension       = in.doubles("membrane/tension");
+      m.minor_tension = in.doubles("membrane/minor_tension");
+      AssertThrow(
+        in.scalar("membrane/element_degree") == m.properties.element_degree,
+        ExcMessage("The checkpoint's membrane has elements of "
+                   "degree "
+                   + std::to_string(in.scalar("membrane/element_degree"))
+                   + "; the scene asks for Membrane/Element "
+                     "degree = "
+                   + std::to_string(m.properties.element_degree) + "."));
       const auto &rest_vertex = in.doubles("membrane/rest_vertex");
       const auto &fe_cells    = in.uints("membrane/fe_cells");
       const auto &edge_node   = in.uints("membrane/edge_node");
@@ -208,6 +211,13 @@ namespace fsgmpm
             AssertThrow(m.fe_cells[c][k] < m.rest_vertex.size(),
                         damaged("a cell names a vertex it does not have"));
           }
+      const auto &edge_rest_point = in.doubles("membrane/edge_rest_point");
+      AssertThrow(edge_rest_point.size() == dim * (edge_node.size() / 3),
+                  damaged("its edge rest points are incomplete"));
+      m.edge_rest_point.resize(edge_node.size() / 3);
+      for (unsigned int e = 0; e < m.edge_rest_point.size(); ++e)
+        for (unsigned int d = 0; d < dim; ++d)
+          m.edge_rest_point[e][d] = edge_rest_point[dim * e + d];
       m.edge_node.resize(edge_node.size() / 3);
       for (unsigned int e = 0; e < m.edge_node.size(); ++e)
         for (unsigned int k = 0; k < 3; ++k)

@@ -11,6 +11,40 @@
 
 namespace fsgmpm
 {
+  namespace
+  {
+    // Point at fraction t of the arc from @p from to @p to on the circle
+    // through a, b, c in x-y (z is kept); the chord where the three points
+    // are (nearly) collinear.
+    template <int dim>
+    Point<dim>
+    point_on_arc(const Point<dim> &a,
+                 const Point<dim> &b,
+                 const Point<dim> &c,
+                 const Point<dim> &from,
+                 const Point<dim> &to,
+                 const double      t)
+    {
+      const Tensor<1, dim> ab = b - a, ac = c - a;
+      const double         d = 2 * (ab[0] * ac[1] - ab[1] * ac[0]);
+      if (std::abs(d) <= 1e-12 * (ab.norm_square() + ac.norm_square()))
+        return Point<dim>(from + t * (to - from));
+      Point<dim> o;
+      o[0] = a[0] + (ac[1] * ab.norm_square() - ab[1] * ac.norm_square()) / d;
+      o[1] = a[1] + (ab[0] * ac.norm_square() - ac[0] * ab.norm_square()) / d;
+      const double r  = std::hypot(from[0] - o[0], from[1] - o[1]);
+      const double t1 = std::atan2(from[1] - o[1], from[0] - o[0]);
+      double       dt = std::atan2(to[1] - o[1], to[0] - o[0]) - t1;
+      dt              = std::remainder(dt, 2 * M_PI); // the short arc
+      Point<dim> x    = from;
+      x[0]            = o[0] + r * std::cos(t1 + t * dt);
+      x[1]            = o[1] + r * std::sin(t1 + t * dt);
+      return x;
+    }
+  } // namespace
+
+
+
   template <int dim>
   Membrane<dim>::Membrane(const Triangulation<dim - 1, dim> &mesh,
                           const MembraneProperties          &props)
@@ -36,10 +70,10 @@ namespace fsgmpm
     // first use (at degree 2 with the edge midpoints between them) so that
     // a closed 2D loop is stored in loop order. The rest state is the
     // initial one shrunk by 1 + eps0.
-    const double                         s        = 1. / (1. + props.initial_strain);
+    const double                         s = 1. / (1. + props.initial_strain);
     const auto                          &vertices = mesh.get_vertices();
     std::map<unsigned int, unsigned int> rest_vertex_of;
-    auto add_node = [&](const Point<dim> &x) {
+    auto                                 add_node = [&](const Point<dim> &x) {
       position.push_back(x);
       return static_cast<unsigned int>(position.size() - 1);
     };
@@ -73,14 +107,66 @@ namespace fsgmpm
                   edge_node.push_back(
                     {{std::min(v, w),
                       std::max(v, w),
-                      add_node(Point<dim>(0.5 * (vertices[c->vertex_index(k)]
-                                                 + vertices[c->vertex_index(wk)])))}});
+                      add_node(
+                        Point<dim>(0.5
+                                   * (vertices[c->vertex_index(k)]
+                                      + vertices[c->vertex_index(wk)])))}});
               }
           }
         fe_cells.push_back(cell_vertices);
       }
     AssertThrow(!fe_cells.empty(),
                 ExcMessage("The membrane mesh has no elements."));
+    // Degree 2 in 2D: the middle nodes on the smooth curve through the
+    // vertices (the arcs through each cell's neighbours, averaged, as
+    // equalize_stretch() places nodes), so that a curved membrane is curved
+    // at rest and not strained by (kappa h)^2/24 when it keeps its shape.
+    if (dim == 2 && props.element_degree == 2)
+      {
+        const unsigned int        invalid = static_cast<unsigned int>(-1);
+        std::vector<unsigned int> cell_ending_at(rest_vertex.size(), invalid),
+          cell_starting_at(rest_vertex.size(), invalid);
+        for (unsigned int c = 0; c < fe_cells.size(); ++c)
+          {
+            cell_starting_at[fe_cells[c][0]]     = c;
+            cell_ending_at[fe_cells[c][dim - 1]] = c;
+          }
+        for (unsigned int c = 0; c < fe_cells.size(); ++c)
+          {
+            const unsigned int v0 = fe_cells[c][0], v1 = fe_cells[c][dim - 1];
+            const Point<dim>  &x0 = position[vertex_node[v0]];
+            const Point<dim>  &x1 = position[vertex_node[v1]];
+            Point<dim>         sum;
+            unsigned int       n_arcs = 0;
+            if (cell_ending_at[v0] != invalid)
+              {
+                sum += point_on_arc(
+                  position[vertex_node[fe_cells[cell_ending_at[v0]][0]]],
+                  x0,
+                  x1,
+                  x0,
+                  x1,
+                  0.5);
+                ++n_arcs;
+              }
+            if (cell_starting_at[v1] != invalid)
+              {
+                sum += point_on_arc(
+                  x0,
+                  x1,
+                  position
+                    [vertex_node[fe_cells[cell_starting_at[v1]][dim - 1]]],
+                  x0,
+                  x1,
+                  0.5);
+                ++n_arcs;
+              }
+            if (n_arcs > 0)
+              position[node_of_edge(v0, v1)] = Point<dim>(sum / n_arcs);
+          }
+      }
+    for (const auto &e : edge_node)
+      edge_rest_point.push_back(Point<dim>(s * position[e[2]]));
     for (unsigned int c = 0; c < fe_cells.size(); ++c)
       add_elements_of_cell(c);
 
@@ -97,13 +183,23 @@ namespace fsgmpm
 
   template <int dim>
   unsigned int
-  Membrane<dim>::node_of_edge(const unsigned int v, const unsigned int w) const
+  Membrane<dim>::edge_index(const unsigned int v, const unsigned int w) const
   {
     const unsigned int a = std::min(v, w), b = std::max(v, w);
-    for (const auto &e : edge_node)
-      if (e[0] == a && e[1] == b)
-        return e[2];
+    for (unsigned int k = 0; k < edge_node.size(); ++k)
+      if (edge_node[k][0] == a && edge_node[k][1] == b)
+        return k;
     return static_cast<unsigned int>(-1);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Membrane<dim>::node_of_edge(const unsigned int v, const unsigned int w) const
+  {
+    const unsigned int k = edge_index(v, w);
+    return k == static_cast<unsigned int>(-1) ? k : edge_node[k][2];
   }
 
 
@@ -113,46 +209,64 @@ namespace fsgmpm
   Membrane<dim>::add_elements_of_cell(const unsigned int c)
   {
     const auto &v = fe_cells[c];
-    // Rest size of the cell: its length (2D) or area (3D).
-    double size = 0;
-    if constexpr (dim == 2)
-      size = rest_vertex[v[0]].distance(rest_vertex[v[1]]);
-    else
-      size = 0.5
-             * cross_product_3d(rest_vertex[v[1]] - rest_vertex[v[0]],
-                                rest_vertex[v[2]] - rest_vertex[v[0]])
-                 .norm();
-    AssertThrow(size > 0,
-                ExcMessage("Membrane element " + std::to_string(c)
-                           + " has zero size (coincident nodes)."));
+    // The pieces by their nodes and the rest positions of those nodes.
     std::vector<std::array<unsigned int, dim>> pieces;
+    std::vector<std::array<Point<dim>, dim>>   rest;
     if (properties.element_degree == 1)
       {
         std::array<unsigned int, dim> e;
+        std::array<Point<dim>, dim>   X;
         for (unsigned int k = 0; k < dim; ++k)
-          e[k] = vertex_node[v[k]];
+          {
+            e[k] = vertex_node[v[k]];
+            X[k] = rest_vertex[v[k]];
+          }
         pieces.push_back(e);
+        rest.push_back(X);
       }
     else
       {
         std::array<unsigned int, dim> corner, middle;
+        std::array<Point<dim>, dim>   C, M;
         for (unsigned int k = 0; k < dim; ++k)
           {
-            corner[k] = vertex_node[v[k]];
-            middle[k] = node_of_edge(v[k], v[(k + 1) % dim]);
+            const unsigned int edge = edge_index(v[k], v[(k + 1) % dim]);
+            corner[k]               = vertex_node[v[k]];
+            middle[k]               = edge_node[edge][2];
+            C[k]                    = rest_vertex[v[k]];
+            M[k]                    = edge_rest_point[edge];
           }
         if constexpr (dim == 2)
-          pieces = {{{corner[0], middle[0]}}, {{middle[0], corner[1]}}};
+          {
+            pieces = {{{corner[0], middle[0]}}, {{middle[0], corner[1]}}};
+            rest   = {{{C[0], M[0]}}, {{M[0], C[1]}}};
+          }
         else
-          pieces = {{{corner[0], middle[0], middle[2]}},
-                    {{middle[0], corner[1], middle[1]}},
-                    {{middle[2], middle[1], corner[2]}},
-                    {{middle[0], middle[1], middle[2]}}};
+          {
+            pieces = {{{corner[0], middle[0], middle[2]}},
+                      {{middle[0], corner[1], middle[1]}},
+                      {{middle[2], middle[1], corner[2]}},
+                      {{middle[0], middle[1], middle[2]}}};
+            rest   = {{{C[0], M[0], M[2]}},
+                      {{M[0], C[1], M[1]}},
+                      {{M[2], M[1], C[2]}},
+                      {{M[0], M[1], M[2]}}};
+          }
       }
-    for (const auto &e : pieces)
+    for (unsigned int k = 0; k < pieces.size(); ++k)
       {
-        elements.push_back(e);
-        rest_size.push_back(size / pieces.size());
+        // Rest size: the straight piece's length (2D) or area (3D).
+        const auto &X    = rest[k];
+        double      size = 0;
+        if constexpr (dim == 2)
+          size = X[0].distance(X[1]);
+        else
+          size = 0.5 * cross_product_3d(X[1] - X[0], X[2] - X[0]).norm();
+        AssertThrow(size > 0,
+                    ExcMessage("Membrane element " + std::to_string(c)
+                               + " has zero size (coincident nodes)."));
+        elements.push_back(pieces[k]);
+        rest_size.push_back(size);
         element_cell.push_back(c);
         tension.push_back(0.);
         minor_tension.push_back(0.);
@@ -180,7 +294,7 @@ namespace fsgmpm
     const unsigned int invalid = static_cast<unsigned int>(-1);
     node_of_dof.assign(fe->n_support_points(), invalid);
     cell_of_active_cell.assign(fe_cells.size(), invalid);
-    const auto &dof_handler = fe->get_dof_handler();
+    const auto                          &dof_handler = fe->get_dof_handler();
     std::vector<types::global_dof_index> dofs(
       dof_handler.get_fe().n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -202,11 +316,11 @@ namespace fsgmpm
         if (properties.element_degree == 2)
           for (unsigned int l = 0; l < (dim == 2 ? 1 : 3); ++l)
             {
-              const unsigned int node =
-                dim == 2 ? node_of_edge(cell->vertex_index(0),
-                                        cell->vertex_index(1)) :
-                           node_of_edge(cell->line(l)->vertex_index(0),
-                                        cell->line(l)->vertex_index(1));
+              const unsigned int node
+                = dim == 2
+                    ? node_of_edge(cell->vertex_index(0), cell->vertex_index(1))
+                    : node_of_edge(cell->line(l)->vertex_index(0),
+                                   cell->line(l)->vertex_index(1));
               AssertThrow(node != invalid, ExcInternalError());
               node_of_dof[dofs[dim + l]] = node;
             }
@@ -214,8 +328,30 @@ namespace fsgmpm
     for (const unsigned int a : node_of_dof)
       AssertThrow(a != invalid && a < position.size(), ExcInternalError());
 
+    // Degree 2: the rest cells through the rest middle nodes (curved where
+    // the membrane was).
+    if (properties.element_degree == 2)
+      {
+        std::vector<Point<dim>> X(fe->n_support_points());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int k = 0; k < dim; ++k)
+              X[dofs[k]] = rest_vertex[cell->vertex_index(k)];
+            for (unsigned int l = 0; l < (dim == 2 ? 1 : 3); ++l)
+              X[dofs[dim + l]]
+                = edge_rest_point[dim == 2 ? edge_index(cell->vertex_index(0),
+                                                        cell->vertex_index(1))
+                                           : edge_index(
+                                             cell->line(l)->vertex_index(0),
+                                             cell->line(l)->vertex_index(1))];
+          }
+        fe->set_rest_support_points(X);
+      }
+
     // Lumped masses of the support points (HRZ, positive at every node).
-    const std::vector<double> dof_mass = fe->lumped_masses(properties.areal_mass);
+    const std::vector<double> dof_mass
+      = fe->lumped_masses(properties.areal_mass);
     mass.assign(position.size(), 0.);
     for (unsigned int i = 0; i < dof_mass.size(); ++i)
       mass[node_of_dof[i]] = dof_mass[i];
@@ -287,12 +423,11 @@ namespace fsgmpm
                               > max_length;
             if (!too_long)
               continue;
-            const unsigned int c = element_cell[e];
+            const unsigned int c  = element_cell[e];
             const unsigned int v0 = fe_cells[c][0], v1 = fe_cells[c][1];
             const unsigned int a = elements[e][0],
                                b = elements[e + per_cell - 1][1];
-            auto add_node = [&](const Point<dim>     &x,
-                                const Tensor<1, dim> &v) {
+            auto add_node = [&](const Point<dim> &x, const Tensor<1, dim> &v) {
               position.push_back(x);
               velocity.push_back(v);
               force.push_back(Tensor<1, dim>());
@@ -301,9 +436,15 @@ namespace fsgmpm
             };
             // The new rest vertex at the middle of the rest cell; the cell
             // becomes (v0, m) and a new cell (m, v1) follows it.
+            // At degree 2 the middle node's rest point, so that the halves
+            // are the same rest curve.
             const unsigned int m = rest_vertex.size();
-            rest_vertex.push_back(
-              Point<dim>(0.5 * (rest_vertex[v0] + rest_vertex[v1])));
+            const unsigned int parent_edge
+              = per_cell == 2 ? edge_index(v0, v1) : 0;
+            const Point<dim> X0 = rest_vertex[v0], X1 = rest_vertex[v1];
+            const Point<dim> Xm = per_cell == 2 ? edge_rest_point[parent_edge]
+                                                : Point<dim>(0.5 * (X0 + X1));
+            rest_vertex.push_back(Xm);
             std::vector<std::array<unsigned int, dim>> pieces;
             if (per_cell == 1)
               {
@@ -331,20 +472,32 @@ namespace fsgmpm
                 const unsigned int q1 = add_node(
                   Point<dim>(quarter(position[b], position[a], position[mid])),
                   quarter(velocity[b], velocity[a], velocity[mid]));
-                edge_node.erase(std::find_if(
-                  edge_node.begin(), edge_node.end(), [&](const auto &x) {
-                    return x[0] == std::min(v0, v1) && x[1] == std::max(v0, v1);
-                  }));
+                edge_node.erase(edge_node.begin() + parent_edge);
+                edge_rest_point.erase(edge_rest_point.begin() + parent_edge);
                 edge_node.push_back({{std::min(v0, m), std::max(v0, m), q0}});
                 edge_node.push_back({{std::min(m, v1), std::max(m, v1), q1}});
+                edge_rest_point.push_back(Point<dim>(quarter(X0, X1, Xm)));
+                edge_rest_point.push_back(Point<dim>(quarter(X1, X0, Xm)));
                 pieces = {{{a, q0}}, {{q0, mid}}, {{mid, q1}}, {{q1, b}}};
               }
             const unsigned int c_new = fe_cells.size();
             fe_cells[c]              = {{v0, m}};
             fe_cells.push_back({{m, v1}});
             // Replace the cell's elements by the two halves' in loop order.
-            const double piece = rest_size[e] * per_cell / pieces.size();
-            const double T    = tension[e];
+            std::vector<double> piece(pieces.size());
+            if (per_cell == 1)
+              piece = {X0.distance(Xm), Xm.distance(X1)};
+            else
+              {
+                const Point<dim> Q0
+                  = edge_rest_point[edge_rest_point.size() - 2],
+                  Q1  = edge_rest_point.back();
+                piece = {X0.distance(Q0),
+                         Q0.distance(Xm),
+                         Xm.distance(Q1),
+                         Q1.distance(X1)};
+              }
+            const double T = tension[e];
             elements.erase(elements.begin() + e,
                            elements.begin() + e + per_cell);
             rest_size.erase(rest_size.begin() + e,
@@ -357,7 +510,7 @@ namespace fsgmpm
             for (unsigned int k = 0; k < pieces.size(); ++k)
               {
                 elements.insert(elements.begin() + e + k, pieces[k]);
-                rest_size.insert(rest_size.begin() + e + k, piece);
+                rest_size.insert(rest_size.begin() + e + k, piece[k]);
                 element_cell.insert(element_cell.begin() + e + k,
                                     k < pieces.size() / 2 ? c : c_new);
                 tension.insert(tension.begin() + e + k, T);
@@ -447,37 +600,14 @@ namespace fsgmpm
 
     // Point at fraction t of the arc from node e to node e+1, on the
     // circle through (e-1, e, e+1) and on the one through (e, e+1, e+2),
-    // averaged: exact on circular pieces, so the enclosed area is kept;
-    // the chord where three nodes are (nearly) collinear.
-    auto on_arc = [](const Point<dim> &a,
-                     const Point<dim> &b,
-                     const Point<dim> &c,
-                     const Point<dim> &from,
-                     const Point<dim> &to,
-                     const double      t) {
-      const Tensor<1, dim> ab = b - a, ac = c - a;
-      const double         d = 2 * (ab[0] * ac[1] - ab[1] * ac[0]);
-      if (std::abs(d) <= 1e-12 * (ab.norm_square() + ac.norm_square()))
-        return Point<dim>(from + t * (to - from));
-      Point<dim> o;
-      o[0] = a[0] + (ac[1] * ab.norm_square() - ab[1] * ac.norm_square()) / d;
-      o[1] = a[1] + (ab[0] * ac.norm_square() - ac[0] * ab.norm_square()) / d;
-      const double r  = std::hypot(from[0] - o[0], from[1] - o[1]);
-      const double t1 = std::atan2(from[1] - o[1], from[0] - o[0]);
-      double       dt = std::atan2(to[1] - o[1], to[0] - o[0]) - t1;
-      dt              = std::remainder(dt, 2 * M_PI); // the short arc
-      Point<dim> x    = from;                         // z (3D rings) is kept
-      x[0]            = o[0] + r * std::cos(t1 + t * dt);
-      x[1]            = o[1] + r * std::sin(t1 + t * dt);
-      return x;
-    };
+    // averaged: exact on circular pieces, so the enclosed area is kept.
     auto curve = [&](const unsigned int e, const double t) {
       const Point<dim> &p0 = position[node[(e + n - 1) % n]],
                        &p1 = position[node[e]],
                        &p2 = position[node[(e + 1) % n]],
                        &p3 = position[node[(e + 2) % n]];
-      const Point<dim> x   = on_arc(p0, p1, p2, p1, p2, t);
-      const Point<dim> y   = on_arc(p1, p2, p3, p1, p2, t);
+      const Point<dim> x   = point_on_arc(p0, p1, p2, p1, p2, t);
+      const Point<dim> y   = point_on_arc(p1, p2, p3, p1, p2, t);
       return Point<dim>(0.5 * (x + y));
     };
 

@@ -2,7 +2,6 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
-#include <deal.II/fe/fe_values.h>
 
 #include <fsgmpm/membrane/membrane_fe.h>
 #include <fsgmpm/membrane/membrane_mechanics.h>
@@ -14,24 +13,6 @@ namespace fsgmpm
 {
   namespace
   {
-    /// An orthonormal frame of the rest surface at a quadrature point from
-    /// the Jacobian's columns (Gram-Schmidt): t[0] along the first.
-    template <int dim>
-    std::array<Tensor<1, dim>, dim - 1>
-    tangent_frame(const DerivativeForm<1, dim - 1, dim> &jacobian)
-    {
-      std::array<Tensor<1, dim>, dim - 1> t;
-      for (unsigned int a = 0; a < dim - 1; ++a)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
-            t[a][d] = jacobian[d][a];
-          for (unsigned int b = 0; b < a; ++b)
-            t[a] -= (t[a] * t[b]) * t[b];
-          t[a] /= t[a].norm();
-        }
-      return t;
-    }
-
     unsigned int
     checked_degree(const unsigned int degree)
     {
@@ -69,31 +50,91 @@ namespace fsgmpm
     rest_points.resize(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, rest_points);
 
-    // The rest geometry's shape-function derivatives along an orthonormal
-    // rest frame, and the JxW values.
-    FEValues<dim - 1, dim>               fe_values(mapping,
-                                     fe,
-                                     quadrature,
-                                     update_gradients | update_jacobians
-                                       | update_JxW_values);
-    const unsigned int                   n_dofs = fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index> dofs(n_dofs);
     n_q_points = quadrature.size();
+    cell_dofs.resize(triangulation.n_active_cells() * fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        fe_values.reinit(cell);
         cell->get_dof_indices(dofs);
-        cell_dofs.insert(cell_dofs.end(), dofs.begin(), dofs.end());
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const auto t = tangent_frame<dim>(fe_values.jacobian(q));
-            JxW.push_back(fe_values.JxW(q));
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              for (unsigned int a = 0; a < dim - 1; ++a)
-                tangent_derivative.push_back(fe_values.shape_grad(i, q)
-                                             * t[a]);
-          }
+        std::copy(dofs.begin(),
+                  dofs.end(),
+                  cell_dofs.begin()
+                    + cell->active_cell_index() * fe.n_dofs_per_cell());
       }
+    set_rest_support_points(rest_points);
+  }
+
+
+
+  template <int dim>
+  void
+  MembraneFE<dim>::set_rest_support_points(const std::vector<Point<dim>> &X)
+  {
+    AssertThrow(X.size() == n_support_points(),
+                ExcMessage("MembraneFE: one rest position per support point "
+                           "is needed."));
+    rest_points = X;
+    // The isoparametric map of the rest cell, X(xi) = sum_i X_i N_i(xi),
+    // at each quadrature point: its Jacobian J (dim x dim-1), the area
+    // element sqrt(det J^T J), an orthonormal tangent frame t_a (Gram-Schmidt
+    // on J's columns) and the surface gradients grad N_i = J (J^T J)^-1
+    // grad_xi N_i, stored as dN_i/dt_a.
+    const unsigned int n_dofs  = fe.n_dofs_per_cell();
+    const unsigned int n_cells = triangulation.n_active_cells();
+    JxW.assign(n_cells * n_q_points, 0.);
+    tangent_derivative.assign(n_cells * n_q_points * n_dofs * (dim - 1), 0.);
+    shape_value.resize(n_q_points * n_dofs);
+    std::vector<Tensor<1, dim - 1>> grad_xi(n_q_points * n_dofs);
+    for (unsigned int q = 0; q < n_q_points; ++q)
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          shape_value[q * n_dofs + i] = fe.shape_value(i, quadrature.point(q));
+          grad_xi[q * n_dofs + i]     = fe.shape_grad(i, quadrature.point(q));
+        }
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int q = 0; q < n_q_points; ++q)
+        {
+          const unsigned int cq = c * n_q_points + q;
+          Tensor<2, dim>     J; // columns 0 .. dim-2 used
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int a = 0; a < dim - 1; ++a)
+                J[d][a] += X[cell_dofs[c * n_dofs + i]][d]
+                           * grad_xi[q * n_dofs + i][a];
+          // Metric G = J^T J and its inverse.
+          Tensor<2, dim - 1> G;
+          for (unsigned int a = 0; a < dim - 1; ++a)
+            for (unsigned int b = 0; b < dim - 1; ++b)
+              for (unsigned int d = 0; d < dim; ++d)
+                G[a][b] += J[d][a] * J[d][b];
+          const double det_G = determinant(G);
+          AssertThrow(det_G > 0,
+                      ExcMessage("Membrane: a cell of the rest membrane is "
+                                 "degenerate (zero length or area)."));
+          const Tensor<2, dim - 1> G_inverse = invert(G);
+          JxW[cq] = quadrature.weight(q) * std::sqrt(det_G);
+          std::array<Tensor<1, dim>, dim - 1> t;
+          for (unsigned int a = 0; a < dim - 1; ++a)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                t[a][d] = J[d][a];
+              for (unsigned int b = 0; b < a; ++b)
+                t[a] -= (t[a] * t[b]) * t[b];
+              t[a] /= t[a].norm();
+            }
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              // grad N_i = J G^-1 grad_xi N_i.
+              const Tensor<1, dim - 1> h = G_inverse * grad_xi[q * n_dofs + i];
+              Tensor<1, dim>           grad;
+              for (unsigned int d = 0; d < dim; ++d)
+                for (unsigned int a = 0; a < dim - 1; ++a)
+                  grad[d] += J[d][a] * h[a];
+              for (unsigned int a = 0; a < dim - 1; ++a)
+                tangent_derivative[(cq * n_dofs + i) * (dim - 1) + a]
+                  = grad * t[a];
+            }
+        }
   }
 
 
@@ -112,8 +153,8 @@ namespace fsgmpm
   template <int dim>
   void
   MembraneFE<dim>::internal_forces(
-    const std::vector<Point<dim>>       &x,
-    std::vector<Tensor<1, dim>>         &force,
+    const std::vector<Point<dim>>      &x,
+    std::vector<Tensor<1, dim>>        &force,
     std::vector<std::array<double, 2>> *cell_stress) const
   {
     AssertThrow(x.size() == n_support_points(),
@@ -164,7 +205,7 @@ namespace fsgmpm
                     // symmetric C^1/2 S C^1/2): from its trace and
                     // determinant.
                     const double C00 = g[0] * g[0], C11 = g[1] * g[1],
-                                 C01 = g[0] * g[1];
+                                 C01   = g[0] * g[1];
                     const double det_C = C00 * C11 - C01 * C01;
                     if (det_C > 1e-24 * (C00 + C11) * (C00 + C11))
                       {
@@ -173,8 +214,8 @@ namespace fsgmpm
                           = (S[0] * C00 + 2 * S[2] * C01 + S[1] * C11) / J;
                         const double det
                           = (S[0] * S[1] - S[2] * S[2]) * det_C / (J * J);
-                        const double root =
-                          std::sqrt(std::max(0., 0.25 * tr * tr - det));
+                        const double root
+                          = std::sqrt(std::max(0., 0.25 * tr * tr - det));
                         principal = {{0.5 * tr + root, 0.5 * tr - root}};
                       }
                   }
@@ -198,31 +239,29 @@ namespace fsgmpm
   std::vector<double>
   MembraneFE<dim>::lumped_masses(const double mu) const
   {
-    std::vector<double>                  mass(n_support_points(), 0.);
-    const QGaussSimplex<dim - 1>         mass_quadrature(fe.degree + 1);
-    FEValues<dim - 1, dim>               fe_values(mapping,
-                                     fe,
-                                     mass_quadrature,
-                                     update_values | update_JxW_values);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<double>                  diagonal(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    // HRZ: the diagonal of the consistent mass matrix (quadrature of degree
+    // 2 k + 1, exact for N_i N_j on straight cells), scaled to the cell's
+    // mass.
+    std::vector<double> mass(n_support_points(), 0.);
+    const unsigned int  n_dofs = fe.n_dofs_per_cell();
+    std::vector<double> diagonal(n_dofs);
+    for (unsigned int c = 0; c < triangulation.n_active_cells(); ++c)
       {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dofs);
         double cell_mass = 0, diagonal_sum = 0;
-        for (unsigned int i = 0; i < dofs.size(); ++i)
+        for (unsigned int i = 0; i < n_dofs; ++i)
           {
             diagonal[i] = 0;
-            for (const unsigned int q : fe_values.quadrature_point_indices())
-              diagonal[i] += mu * fe_values.shape_value(i, q)
-                             * fe_values.shape_value(i, q) * fe_values.JxW(q);
+            for (unsigned int q = 0; q < n_q_points; ++q)
+              diagonal[i] += mu * shape_value[q * n_dofs + i]
+                             * shape_value[q * n_dofs + i]
+                             * JxW[c * n_q_points + q];
             diagonal_sum += diagonal[i];
           }
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          cell_mass += mu * fe_values.JxW(q);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          mass[dofs[i]] += diagonal[i] * cell_mass / diagonal_sum;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          cell_mass += mu * JxW[c * n_q_points + q];
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          mass[cell_dofs[c * n_dofs + i]]
+            += diagonal[i] * cell_mass / diagonal_sum;
       }
     return mass;
   }

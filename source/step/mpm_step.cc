@@ -51,7 +51,8 @@ namespace fsgmpm
                                                    "free_surface",
                                                    "anp",
                                                    "position_update",
-                                                   "relocate"};
+                                                   "relocate",
+                                                   "membrane"};
     return names;
   }
 
@@ -77,10 +78,16 @@ namespace fsgmpm
   void
   MpmStep<dim>::transfer_to_grid()
   {
-    TimerOutput::Scope scope(timer, "p2g");
-    Stages::p2g(grid, particles, nodes, settings.stress_integration);
+    {
+      TimerOutput::Scope scope(timer, "p2g");
+      Stages::p2g(grid, particles, nodes, settings.stress_integration);
+    }
     if (membrane)
-      Stages::membrane_p2g(grid, *membrane, nodes);
+      {
+        TimerOutput::Scope scope(timer, "membrane");
+        Stages::membrane_p2g(grid, *membrane, nodes);
+      }
+    TimerOutput::Scope scope(timer, "p2g");
     Stages::contact_normals(grid, particles, nodes);
   }
 
@@ -90,14 +97,18 @@ namespace fsgmpm
   double
   MpmStep<dim>::stable_time_step()
   {
-    TimerOutput::Scope scope(timer, "time_step");
-    double             dt = Stages::stable_time_step(grid,
-                                         particles,
-                                         materials,
-                                         settings.courant,
-                                         membrane ? &cell_stiffness : nullptr);
+    double dt;
+    {
+      TimerOutput::Scope scope(timer, "time_step");
+      dt = Stages::stable_time_step(grid,
+                                    particles,
+                                    materials,
+                                    settings.courant,
+                                    membrane ? &cell_stiffness : nullptr);
+    }
     if (membrane)
       {
+        TimerOutput::Scope scope(timer, "membrane");
         // The nodes the membrane touches: the nodal bound with the
         // membrane's and the points' stiffness (which holds the points'
         // share there, so the smaller of the two bounds governs).
@@ -151,9 +162,12 @@ namespace fsgmpm
       const double       tau = settings.flip_noise_relaxation_time;
       Stages::g2p(
         grid, nodes, dt, particles, tau > 0 ? -std::expm1(-dt / tau) : 0.);
-      if (membrane)
-        Stages::membrane_g2p(grid, nodes, *membrane);
     }
+    if (membrane)
+      {
+        TimerOutput::Scope scope(timer, "membrane");
+        Stages::membrane_g2p(grid, nodes, *membrane);
+      }
     if (settings.use_musl)
       {
         // Eq. (20): nodal velocities again from the updated points.
@@ -209,20 +223,31 @@ namespace fsgmpm
       TimerOutput::Scope scope(timer, "position_update");
       result.displacement_ratio
         = Stages::update_positions(grid, nodes, dt, particles);
-      if (membrane)
+    }
+    if (membrane)
+      {
+        TimerOutput::Scope scope(timer, "membrane");
         result.displacement_ratio
           = std::max(result.displacement_ratio,
                      Stages::membrane_positions(grid, nodes, dt, *membrane));
-    }
+      }
     // After a blow-up the positions are not finite and cannot be located;
     // run control stops the run on the ratio.
     if (std::isfinite(result.displacement_ratio))
       {
-        TimerOutput::Scope scope(timer, "relocate");
-        result.lost_particles = Stages::relocate(grid, particles);
+        {
+          TimerOutput::Scope scope(timer, "relocate");
+          result.lost_particles = Stages::relocate(grid, particles);
+        }
+        // The membrane's slip, splits, location and element forces.
         if (membrane)
-          result.membrane_nodes_outside
-            = Stages::membrane_relocate(grid, membrane_split_length, *membrane);
+          {
+            TimerOutput::Scope scope(timer, "membrane");
+            result.membrane_nodes_outside
+              = Stages::membrane_relocate(grid,
+                                          membrane_split_length,
+                                          *membrane);
+          }
       }
     return result;
   }

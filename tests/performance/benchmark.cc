@@ -12,6 +12,16 @@
 //   BENCH <case> dim=<d> particles=<n> steps=<s> updates_per_second=<x>
 //         bytes_per_particle=<b> baseline_updates_per_second=<y>
 // and the time per step of each stage. Not a test with a timed assertion.
+//
+// The membrane (issue 17): the geotube cases time the membrane's share of
+// the step (stage "membrane"), slip at degree 1 as shipped and no-slip at
+// degrees 1 and 2 with the same nodes; membrane_forces_2d/3d time the
+// element forces of MembraneFE against the hand-written cables and
+// triangles (MembraneMechanics, kept as the tests' reference) on the same
+// membrane:
+//   BENCH membrane_forces_<d>d elements=<n> fe_degree1_ns_per_element=<x>
+//         hand_written_ns_per_element=<y> ratio=<x/y>
+//         fe_degree2_ns_per_cell=<z>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature.h>
@@ -22,11 +32,15 @@
 
 #include <deal.II/particles/particle_handler.h>
 
+#include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/membrane/membrane_mechanics.h>
 #include <fsgmpm/simulator.h>
 
 #include <chrono>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "test_utilities.h"
 
@@ -46,28 +60,7 @@ namespace
   std::string
   dam_break_scene()
   {
-    return R"(
-subsection Simulation
-  set End time = 100
-end
-subsection Grid
-  set Upper corner = 0.684, 0.285
-  set Subdivisions = 480, 200
-  set Boundary conditions = 0: roller, 1: roller, 2: roller, 3: free
-end
-subsection Bodies
-  subsection Body 0
-    set Material model = Newtonian fluid
-    set Initial stress = hydrostatic
-    set Box lower corner = 0, 0
-    set Box upper corner = 0.114, 0.228
-    set Particles per cell = 4
-    subsection Newtonian fluid
-      set Bulk modulus = 2.5e6
-    end
-  end
-end
-)";
+    return R"(\nsubsection Simulation\n  set End time = 100\nend\nsubsection Grid\n  set Upper corner = 0.684, 0.285\n  set Subdivisions = 480, 200\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, 3: free\nend\nsubsection Bodies\n  subsection Body 0\n    set Material model = Newtonian fluid\n    set Initial stress = hydrostatic\n    set Box lower corner = 0, 0\n    set Box upper corner = 0.114, 0.228\n    set Particles per cell = 4\n    subsection Newtonian fluid\n      set Bulk modulus = 2.5e6\n    end\n  end\nend\n)";
   }
 
   // The same water column in a tank of 10 times the area (sqrt(10) times
@@ -77,12 +70,8 @@ end
   std::string
   dam_break_scene_wide_tank()
   {
-    return dam_break_scene() + R"(
-subsection Grid
-  set Upper corner = 2.1630, 0.9013
-  set Subdivisions = 1518, 632
-end
-)";
+    return dam_break_scene()
+           + R"(\nsubsection Grid\n  set Upper corner = 2.1630, 0.9013\n  set Subdivisions = 1518, 632\nend\n)";
   }
 
   // The same dam break in 3D: a slab of 0.057 m depth with slip faces,
@@ -90,30 +79,7 @@ end
   std::string
   dam_break_scene_3d()
   {
-    return R"(
-subsection Simulation
-  set Dimension = 3
-  set End time = 100
-end
-subsection Grid
-  set Lower corner = 0, 0, 0
-  set Upper corner = 0.684, 0.285, 0.057
-  set Subdivisions = 120, 50, 10
-  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller
-end
-subsection Bodies
-  subsection Body 0
-    set Material model = Newtonian fluid
-    set Initial stress = hydrostatic
-    set Box lower corner = 0, 0, 0
-    set Box upper corner = 0.114, 0.228, 0.057
-    set Particles per cell = 8
-    subsection Newtonian fluid
-      set Bulk modulus = 2.5e6
-    end
-  end
-end
-)";
+    return R"(\nsubsection Simulation\n  set Dimension = 3\n  set End time = 100\nend\nsubsection Grid\n  set Lower corner = 0, 0, 0\n  set Upper corner = 0.684, 0.285, 0.057\n  set Subdivisions = 120, 50, 10\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller\nend\nsubsection Bodies\n  subsection Body 0\n    set Material model = Newtonian fluid\n    set Initial stress = hydrostatic\n    set Box lower corner = 0, 0, 0\n    set Box upper corner = 0.114, 0.228, 0.057\n    set Particles per cell = 8\n    subsection Newtonian fluid\n      set Bulk modulus = 2.5e6\n    end\n  end\nend\n)";
   }
 
   template <int dim>
@@ -122,49 +88,8 @@ end
   {
     // The block fills the lower 80% of the mesh; gravity makes it move.
     if (dim == 2)
-      return R"(
-subsection Simulation
-  set Dimension = 2
-  set End time = 100
-end
-subsection Grid
-  set Upper corner = 1.6, 1.0
-  set Subdivisions = 160, 100
-  set Boundary conditions = 0: roller, 1: roller, 2: roller
-end
-subsection Bodies
-  subsection Body 0
-    set Box lower corner = 0, 0
-    set Box upper corner = 1.6, 0.8
-    set Particles per cell = 4
-    subsection Linear elastic
-      set Young's modulus = 1e6
-    end
-  end
-end
-)";
-    return R"(
-subsection Simulation
-  set Dimension = 3
-  set End time = 100
-end
-subsection Grid
-  set Lower corner = 0, 0, 0
-  set Upper corner = 1.2, 1.0, 0.6
-  set Subdivisions = 24, 20, 12
-  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller
-end
-subsection Bodies
-  subsection Body 0
-    set Box lower corner = 0, 0, 0
-    set Box upper corner = 1.2, 0.8, 0.6
-    set Particles per cell = 8
-    subsection Linear elastic
-      set Young's modulus = 1e6
-    end
-  end
-end
-)";
+      return R"(\nsubsection Simulation\n  set Dimension = 2\n  set End time = 100\nend\nsubsection Grid\n  set Upper corner = 1.6, 1.0\n  set Subdivisions = 160, 100\n  set Boundary conditions = 0: roller, 1: roller, 2: roller\nend\nsubsection Bodies\n  subsection Body 0\n    set Box lower corner = 0, 0\n    set Box upper corner = 1.6, 0.8\n    set Particles per cell = 4\n    subsection Linear elastic\n      set Young's modulus = 1e6\n    end\n  end\nend\n)";
+    return R"(\nsubsection Simulation\n  set Dimension = 3\n  set End time = 100\nend\nsubsection Grid\n  set Lower corner = 0, 0, 0\n  set Upper corner = 1.2, 1.0, 0.6\n  set Subdivisions = 24, 20, 12\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller\nend\nsubsection Bodies\n  subsection Body 0\n    set Box lower corner = 0, 0, 0\n    set Box upper corner = 1.2, 0.8, 0.6\n    set Particles per cell = 8\n    subsection Linear elastic\n      set Young's modulus = 1e6\n    end\n  end\nend\n)";
   }
 
   /**
@@ -312,6 +237,135 @@ end
   // Only the cases whose name contains this string run.
   std::string case_filter;
 
+  // The shipped geotube at 16 cm cells with @p changes appended.
+  std::string
+  geotube_scene(const std::string &changes)
+  {
+    std::ifstream in(std::string(FSGMPM_TEST_SOURCE_DIR)
+                     + "/../prm/geotube_A5.56.prm");
+    AssertThrow(in, ExcMessage("cannot read prm/geotube_A5.56.prm"));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str()
+           + "subsection Grid\n  set Cell size = 0.16\nend\n"
+             "subsection Output\n  set Output interval = 0\nend\n"
+           + changes;
+  }
+
+  // Element forces of a membrane: MembraneFE of degree 1 (what Membrane
+  // runs) and 2 against the hand-written elements, @p reps evaluations of a
+  // deformed ring of n cables (2D) or an n x n cylinder of triangles (3D).
+  template <int dim>
+  void
+  membrane_forces_case(const unsigned int n, const unsigned int reps)
+  {
+    const std::string name = "membrane_forces_" + std::to_string(dim) + "d";
+    if (name.find(case_filter) == std::string::npos)
+      return;
+    std::vector<Point<dim>>        vertices;
+    std::vector<CellData<dim - 1>> cells;
+    if constexpr (dim == 2)
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          vertices.emplace_back(std::cos(2 * M_PI * i / n),
+                                std::sin(2 * M_PI * i / n));
+          CellData<1> c;
+          c.vertices = {i, (i + 1) % n};
+          cells.push_back(c);
+        }
+    else
+      {
+        for (unsigned int j = 0; j <= n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            vertices.emplace_back(std::cos(2 * M_PI * i / n),
+                                  std::sin(2 * M_PI * i / n),
+                                  double(j) / n);
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int v0 = j * n + i, v1 = j * n + (i + 1) % n,
+                                 v2 = v0 + n, v3 = v1 + n;
+              CellData<2> a, b;
+              a.vertices = {v0, v1, v3};
+              b.vertices = {v0, v3, v2};
+              cells.push_back(a);
+              cells.push_back(b);
+            }
+      }
+    Triangulation<dim - 1, dim> mesh;
+    mesh.create_triangulation(vertices, cells, SubCellData());
+    MembraneProperties props;
+    props.axial_stiffness = 5e7;
+    Membrane<dim> m(mesh, props);
+    for (auto &x : m.position)
+      x[0] *= 1.001; // a stretch, so that every element is in tension
+    const auto t0 = Clock::now();
+    for (unsigned int r = 0; r < reps; ++r)
+      m.compute_forces();
+    const double fe = seconds_since(t0) / reps / m.n_elements();
+
+    // The hand-written elements on the same nodes and rest geometry.
+    std::vector<MembraneMechanics::TriangleReference> reference;
+    if constexpr (dim == 3)
+      for (const auto &c : m.fe_cells)
+        reference.push_back(MembraneMechanics::make_triangle_reference(
+          m.rest_vertex[c[0]], m.rest_vertex[c[1]], m.rest_vertex[c[2]]));
+    std::vector<Tensor<1, dim>> force(m.n_nodes());
+    const auto                  t1 = Clock::now();
+    for (unsigned int r = 0; r < reps; ++r)
+      {
+        for (auto &f : force)
+          f = Tensor<1, dim>();
+        for (unsigned int e = 0; e < m.n_elements(); ++e)
+          {
+            const auto &el = m.elements[e];
+            if constexpr (dim == 2)
+              {
+                Tensor<1, 2> f1, f2;
+                m.tension[e]
+                  = MembraneMechanics::cable_forces(m.position[el[0]],
+                                                    m.position[el[1]],
+                                                    m.rest_size[e],
+                                                    props.axial_stiffness,
+                                                    f1,
+                                                    f2);
+                force[el[0]] += f1;
+                force[el[1]] += f2;
+              }
+            else
+              {
+                std::array<Tensor<1, 3>, 3> f;
+                const auto                  r
+                  = MembraneMechanics::triangle_forces(reference[e],
+                                                       m.position[el[0]],
+                                                       m.position[el[1]],
+                                                       m.position[el[2]],
+                                                       props.axial_stiffness,
+                                                       props.poisson_ratio,
+                                                       f);
+                m.tension[e] = r.major_principal;
+                for (unsigned int k = 0; k < 3; ++k)
+                  force[el[k]] += f[k];
+              }
+          }
+      }
+    const double hand = seconds_since(t1) / reps / m.n_elements();
+
+    props.element_degree = 2;
+    Membrane<dim> m2(mesh, props);
+    for (auto &x : m2.position)
+      x[0] *= 1.001;
+    const auto t2 = Clock::now();
+    for (unsigned int r = 0; r < reps; ++r)
+      m2.compute_forces();
+    const double fe2 = seconds_since(t2) / reps / m2.fe_cells.size();
+    std::cout << "BENCH " << name << " elements=" << m.n_elements()
+              << " fe_degree1_ns_per_element=" << std::setprecision(4)
+              << 1e9 * fe << " hand_written_ns_per_element=" << 1e9 * hand
+              << " ratio=" << fe / hand
+              << " fe_degree2_ns_per_cell=" << 1e9 * fe2 << std::endl;
+  }
+
   // Runs one case and returns the baseline's speed (0 if the case is
   // filtered out); a case that differs
   // from an earlier one only in fsgmpm settings passes that baseline in
@@ -412,6 +466,36 @@ main(int argc, char **argv)
       run_case<3>("dam_break_3d",
                   std::max(2u, steps / 2),
                   dam_break_scene_3d());
+      // The membrane (issue 17): the geotube as shipped (slip, degree 1),
+      // and the paper's no-slip coupling at degree 1 (elements of 0.9
+      // cells) and 2 (cells of 1.8 grid cells: the same nodes).
+      const std::string no_slip
+        = "subsection Membrane\n"
+          "  set Tangential coupling = no-slip\n"
+          "  set Split length = 1\n"
+          "end\n"
+          "subsection Simulation\n"
+          "  set Stress integration = nodal projection\n"
+          "end\n";
+      const double geotube_baseline
+        = run_case<2>("geotube_2d", steps, geotube_scene(""));
+      run_case<2>("geotube_2d_no_slip",
+                  steps,
+                  geotube_scene(no_slip
+                                + "subsection Membrane\n"
+                                  "  set Element size = 0.144\n"
+                                  "end\n"),
+                  geotube_baseline);
+      run_case<2>("geotube_2d_no_slip_degree2",
+                  steps,
+                  geotube_scene(no_slip
+                                + "subsection Membrane\n"
+                                  "  set Element size = 0.288\n"
+                                  "  set Element degree = 2\n"
+                                  "end\n"),
+                  geotube_baseline);
+      membrane_forces_case<2>(4000, 200);
+      membrane_forces_case<3>(60, 50);
     }
   catch (std::exception &e)
     {

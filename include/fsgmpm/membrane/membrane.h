@@ -246,6 +246,9 @@ namespace fsgmpm
     /// Degree 2: the node at the midpoint of each cell edge, as
     /// {vertex, vertex, node} with the smaller vertex first.
     std::vector<std::array<unsigned int, 3>> edge_node;
+    /// Degree 2: the rest position of each edge's middle node (on the rest
+    /// curve: rest cells are curved where the initial membrane is).
+    std::vector<Point<dim>> edge_rest_point;
     /// The cell (index into fe_cells) each element lies in.
     std::vector<unsigned int> element_cell;
 
@@ -264,6 +267,10 @@ namespace fsgmpm
     /// quarters), appended to elements with their rest sizes.
     void
     add_elements_of_cell(const unsigned int c);
+
+    /// The index in edge_node of edge (v, w); invalid if none.
+    unsigned int
+    edge_index(const unsigned int v, const unsigned int w) const;
 
     /// The node at the midpoint of edge (v, w); invalid if none.
     unsigned int

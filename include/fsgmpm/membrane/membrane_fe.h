@@ -39,10 +39,11 @@ namespace fsgmpm
    *   (grad N_i . t_b) dA.
    * The forces are those ON the support points (-dW/dx).
    *
-   * Total Lagrangian on a fixed rest geometry: the shape-function
-   * derivatives along the rest tangents and the JxW values never change, so
-   * they are computed once by FEValues in the constructor and the forces
-   * are then pure arithmetic on the current positions.
+   * Total Lagrangian on a fixed rest geometry, the isoparametric cells
+   * through the rest support points: the shape-function derivatives along
+   * the rest tangents and the JxW values never change, so they are computed
+   * once (set_rest_support_points()) and the forces are then pure
+   * arithmetic on the current positions.
    */
   template <int dim>
   class MembraneFE
@@ -69,6 +70,13 @@ namespace fsgmpm
       return rest_points;
     }
 
+    /// Makes @p X (one point per support point, DoF order) the rest
+    /// geometry: the rest cells become the isoparametric cells through
+    /// them, curved at degree 2. The constructor uses the triangulation's
+    /// straight cells (the edge midpoints at degree 2).
+    void
+    set_rest_support_points(const std::vector<Point<dim>> &X);
+
     /// Forces on the support points for the current positions @p x (same
     /// order as rest_support_points()).
     std::vector<Tensor<1, dim>>
@@ -82,8 +90,8 @@ namespace fsgmpm
     /// sigma = F S F^T / J in the current tangent plane, after the
     /// cut-off.
     void
-    internal_forces(const std::vector<Point<dim>>       &x,
-                    std::vector<Tensor<1, dim>>         &force,
+    internal_forces(const std::vector<Point<dim>>      &x,
+                    std::vector<Tensor<1, dim>>        &force,
                     std::vector<std::array<double, 2>> *cell_stress) const;
 
     /// Lumped mass of each support point for the areal mass @p mu (kg/m^2,
@@ -121,6 +129,8 @@ namespace fsgmpm
     std::vector<types::global_dof_index> cell_dofs;
     std::vector<double>                  JxW;
     std::vector<double>                  tangent_derivative;
+    /// N_i at the quadrature points of the reference cell, [q n_dofs + i].
+    std::vector<double> shape_value;
   };
 } // namespace fsgmpm
 

@@ -102,7 +102,9 @@ namespace fsgmpm
             const double          new_time,
             const Tensor<1, dim> &gravity);
 
-    /// Names of the timed stages, in the order they run.
+    /// Names of the timed stages, in the order they run; "membrane" last
+    /// collects the membrane's part of every stage (its transfers, time-step
+    /// bound, position update, slip, splits and element forces).
     static const std::vector<std::string> &
     stage_names();
 
