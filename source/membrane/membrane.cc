@@ -293,7 +293,7 @@ namespace fsgmpm
     // then one per edge at degree 2 (FE_SimplexP's order).
     const unsigned int invalid = static_cast<unsigned int>(-1);
     node_of_dof.assign(fe->n_support_points(), invalid);
-    cell_of_active_cell.assign(fe_cells.size(), invalid);
+    active_cell_of_cell.assign(fe_cells.size(), invalid);
     const auto                          &dof_handler = fe->get_dof_handler();
     std::vector<types::global_dof_index> dofs(
       dof_handler.get_fe().n_dofs_per_cell());
@@ -308,7 +308,7 @@ namespace fsgmpm
                                 cell->vertex_index(k))
                         != fe_cells[c].end(),
                       ExcInternalError());
-        cell_of_active_cell[cell->active_cell_index()] = c;
+        active_cell_of_cell[c] = cell->active_cell_index();
         for (unsigned int k = 0; k < dim; ++k)
           node_of_dof[dofs[k]] = vertex_node[cell->vertex_index(k)];
         // Degree 2: the edge DoFs follow, one per line of the reference
@@ -369,13 +369,11 @@ namespace fsgmpm
     fe->internal_forces(dof_position, dof_force, &cell_stress);
     for (unsigned int i = 0; i < node_of_dof.size(); ++i)
       force[node_of_dof[i]] = dof_force[i];
-    std::vector<std::array<double, 2>> stress_of_cell(fe_cells.size());
-    for (unsigned int k = 0; k < cell_stress.size(); ++k)
-      stress_of_cell[cell_of_active_cell[k]] = cell_stress[k];
     for (unsigned int e = 0; e < elements.size(); ++e)
       {
-        tension[e]       = stress_of_cell[element_cell[e]][0];
-        minor_tension[e] = stress_of_cell[element_cell[e]][1];
+        const auto &stress = cell_stress[active_cell_of_cell[element_cell[e]]];
+        tension[e]         = stress[0];
+        minor_tension[e]   = stress[1];
       }
     // Ground contact: a normal penalty force on the nodes below the ground
     // (frictionless: no tangential force).

@@ -256,8 +256,8 @@ namespace fsgmpm
     std::unique_ptr<MembraneFE<dim>> fe;
     /// The node of each support point (DoF) of fe.
     std::vector<unsigned int> node_of_dof;
-    /// fe_cells index of each active cell of fe.
-    std::vector<unsigned int> cell_of_active_cell;
+    /// The active cell of fe holding each of fe_cells.
+    std::vector<unsigned int> active_cell_of_cell;
     /// Scratch of compute_forces().
     std::vector<Point<dim>>            dof_position;
     std::vector<Tensor<1, dim>>        dof_force;
