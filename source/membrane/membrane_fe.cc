@@ -32,7 +32,11 @@ namespace fsgmpm
                               const double                       nu)
     : fe(checked_degree(degree))
     , mapping(FE_SimplexP<dim - 1, dim>(1))
-    , quadrature(QGaussSimplex<dim - 1>(degree + 1))
+    // Degree 1 has a constant strain per cell: its one-point rule is exact
+    // for the forces, and HRZ lumping gives the exact mass L/2 or A/3 per
+    // vertex by symmetry with any symmetric rule. Degree 2 keeps
+    // QGaussSimplex(3), exact for the quartic N_i N_j on straight cells.
+    , quadrature(QGaussSimplex<dim - 1>(degree == 1 ? 1 : degree + 1))
     , EA(EA)
     , nu(nu)
   {
@@ -239,9 +243,10 @@ namespace fsgmpm
   std::vector<double>
   MembraneFE<dim>::lumped_masses(const double mu) const
   {
-    // HRZ: the diagonal of the consistent mass matrix (quadrature of degree
-    // 2 k + 1, exact for N_i N_j on straight cells), scaled to the cell's
-    // mass.
+    // HRZ: the diagonal of the consistent mass matrix (at degree 2 by a
+    // quadrature exact for N_i N_j on straight cells; at degree 1 the
+    // one-point rule gives equal diagonals, hence the exact equal shares),
+    // scaled to the cell's mass.
     std::vector<double> mass(n_support_points(), 0.);
     const unsigned int  n_dofs = fe.n_dofs_per_cell();
     std::vector<double> diagonal(n_dofs);
