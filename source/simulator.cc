@@ -4,6 +4,7 @@
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/io/grid_output.h>
+#include <fsgmpm/io/membrane_fe_output.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
@@ -230,12 +231,6 @@ namespace fsgmpm
       = {grid->lower_corner[dim - 1], grid->upper_corner[dim - 1]};
     if (description.shape != "gmsh")
       membrane_outline = description.outline(h);
-    else
-      for (const auto &body : bodies)
-        AssertThrow(!body.fills_membrane,
-                    ExcMessage(body.path
-                               + "/Shape = membrane needs a membrane given "
-                                 "as an ellipse or polygon."));
 
     // The frictionless slip places the nodes by chord lengths (degree-1
     // geometry); on quadratic cells that is off by O((kappa h)^2) against
@@ -249,9 +244,30 @@ namespace fsgmpm
                            "slip spreads the stretch by chord lengths, which "
                            "quadratic elements do not follow); use the "
                            "paper's no-slip coupling, or degree 1."));
-    Triangulation<dim - 1, dim> mesh;
-    description.make_mesh(h, membrane_z_range, mesh);
-    membrane = std::make_unique<Membrane<dim>>(mesh, description.properties);
+    Triangulation<dim - 1, dim>                                 mesh;
+    std::map<std::pair<unsigned int, unsigned int>, Point<dim>> middle_points;
+    description.make_mesh(h, membrane_z_range, mesh, &middle_points);
+    membrane = std::make_unique<Membrane<dim>>(mesh,
+                                               description.properties,
+                                               middle_points);
+    // A Gmsh surface extruded along z (a closed ring of nodes at each z
+    // level) can be filled like an ellipse or polygon: its cross-section is
+    // the lowest ring, counter-clockwise.
+    if (description.shape == "gmsh" && !membrane->rings.empty())
+      {
+        for (const unsigned int a : membrane->rings.front())
+          membrane_outline.emplace_back(membrane->position[a][0],
+                                        membrane->position[a][1]);
+        if (MembraneGeometry::signed_area(membrane_outline) < 0)
+          std::reverse(membrane_outline.begin(), membrane_outline.end());
+      }
+    for (const auto &body : bodies)
+      AssertThrow(!body.fills_membrane || !membrane_outline.empty(),
+                  ExcMessage(body.path
+                             + "/Shape = membrane needs a membrane given as "
+                               "an ellipse or polygon, or a Gmsh surface "
+                               "extruded along z (a closed ring of nodes at "
+                               "each z level)."));
     membrane->tangential_slip = description.tangential_slip;
     AssertThrow(!membrane->tangential_slip || dim == 2
                   || !membrane->rings.empty(),
@@ -654,7 +670,10 @@ namespace fsgmpm
     else if (membrane)
       {
         const std::string name = membrane_series->next_file(time);
-        write_membrane_vtu(*membrane, dir + "/" + name);
+        if (params.membrane_output == "finite elements")
+          write_membrane_fe_vtu(*membrane, dir + "/" + name);
+        else
+          write_membrane_vtu(*membrane, dir + "/" + name);
         membrane_series->write_pvd();
       }
     if (params.write_grid)

@@ -47,7 +47,9 @@ namespace fsgmpm
 
   template <int dim>
   Membrane<dim>::Membrane(const Triangulation<dim - 1, dim> &mesh,
-                          const MembraneProperties          &props)
+                          const MembraneProperties          &props,
+                          const std::map<std::pair<unsigned int, unsigned int>,
+                                         Point<dim>>        &edge_middle_points)
     : properties(props)
   {
     AssertThrow(props.axial_stiffness > 0
@@ -104,13 +106,21 @@ namespace fsgmpm
                 const unsigned int w  = cell_vertices[(k + 1) % dim];
                 const unsigned int wk = (k + 1) % dim;
                 if (node_of_edge(v, w) == static_cast<unsigned int>(-1))
-                  edge_node.push_back(
-                    {{std::min(v, w),
-                      std::max(v, w),
-                      add_node(
-                        Point<dim>(0.5
-                                   * (vertices[c->vertex_index(k)]
-                                      + vertices[c->vertex_index(wk)])))}});
+                  {
+                    const unsigned int mv = c->vertex_index(k),
+                                       mw = c->vertex_index(wk);
+                    const auto curved     = edge_middle_points.find(
+                      {std::min(mv, mw), std::max(mv, mw)});
+                    edge_lookup[{std::min(v, w), std::max(v, w)}]
+                      = edge_node.size();
+                    edge_node.push_back(
+                      {{std::min(v, w),
+                        std::max(v, w),
+                        add_node(curved != edge_middle_points.end()
+                                   ? curved->second
+                                   : Point<dim>(
+                                     0.5 * (vertices[mv] + vertices[mw])))}});
+                  }
               }
           }
         fe_cells.push_back(cell_vertices);
@@ -121,7 +131,7 @@ namespace fsgmpm
     // vertices (the arcs through each cell's neighbours, averaged, as
     // equalize_stretch() places nodes), so that a curved membrane is curved
     // at rest and not strained by (kappa h)^2/24 when it keeps its shape.
-    if (dim == 2 && props.element_degree == 2)
+    if (dim == 2 && props.element_degree == 2 && edge_middle_points.empty())
       {
         const unsigned int        invalid = static_cast<unsigned int>(-1);
         std::vector<unsigned int> cell_ending_at(rest_vertex.size(), invalid),
@@ -185,11 +195,15 @@ namespace fsgmpm
   unsigned int
   Membrane<dim>::edge_index(const unsigned int v, const unsigned int w) const
   {
-    const unsigned int a = std::min(v, w), b = std::max(v, w);
-    for (unsigned int k = 0; k < edge_node.size(); ++k)
-      if (edge_node[k][0] == a && edge_node[k][1] == b)
-        return k;
-    return static_cast<unsigned int>(-1);
+    if (!edge_lookup_valid)
+      {
+        edge_lookup.clear();
+        for (unsigned int k = 0; k < edge_node.size(); ++k)
+          edge_lookup[{edge_node[k][0], edge_node[k][1]}] = k;
+        edge_lookup_valid = true;
+      }
+    const auto it = edge_lookup.find({std::min(v, w), std::max(v, w)});
+    return it == edge_lookup.end() ? static_cast<unsigned int>(-1) : it->second;
   }
 
 
@@ -279,6 +293,8 @@ namespace fsgmpm
   void
   Membrane<dim>::setup_finite_elements()
   {
+    // The rest structure may have been rewritten (a checkpoint, a split).
+    edge_lookup_valid = false;
     std::vector<CellData<dim - 1>> cells(fe_cells.size());
     for (unsigned int c = 0; c < fe_cells.size(); ++c)
       cells[c].vertices.assign(fe_cells[c].begin(), fe_cells[c].end());
@@ -471,6 +487,7 @@ namespace fsgmpm
                   Point<dim>(quarter(position[b], position[a], position[mid])),
                   quarter(velocity[b], velocity[a], velocity[mid]));
                 edge_node.erase(edge_node.begin() + parent_edge);
+                edge_lookup_valid = false;
                 edge_rest_point.erase(edge_rest_point.begin() + parent_edge);
                 edge_node.push_back({{std::min(v0, m), std::max(v0, m), q0}});
                 edge_node.push_back({{std::min(m, v1), std::max(m, v1), q1}});

@@ -2,7 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
-#include <fsgmpm/io/gmsh_reader.h>
+#include <fsgmpm/io/gmsh_surface.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_shape.h>
 #include <fsgmpm/scene/parameter_parsing.h>
@@ -110,6 +110,20 @@ namespace fsgmpm
           p.push_back(at(2 * M_PI * (j + f) / m));
         }
       return p;
+    }
+
+
+
+    double
+    signed_area(const std::vector<Point<2>> &outline)
+    {
+      double area = 0;
+      for (unsigned int i = 0; i < outline.size(); ++i)
+        {
+          const auto &p = outline[i], &q = outline[(i + 1) % outline.size()];
+          area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+        }
+      return area;
     }
   } // namespace MembraneGeometry
 
@@ -385,13 +399,7 @@ namespace fsgmpm
         }
 
     // Counter-clockwise, so that the enclosed area is positive.
-    double signed_area = 0;
-    for (unsigned int i = 0; i < outline.size(); ++i)
-      {
-        const auto &p = outline[i], &q = outline[(i + 1) % outline.size()];
-        signed_area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
-      }
-    if (signed_area < 0)
+    if (MembraneGeometry::signed_area(outline) < 0)
       std::reverse(outline.begin(), outline.end());
     return outline;
   }
@@ -400,20 +408,29 @@ namespace fsgmpm
 
   template <int dim>
   void
-  MembraneDescription<dim>::make_mesh(const double cell_size,
-                                      const std::pair<double, double> &z_range,
-                                      Triangulation<dim - 1, dim> &mesh) const
+  MembraneDescription<dim>::make_mesh(
+    const double                     cell_size,
+    const std::pair<double, double> &z_range,
+    Triangulation<dim - 1, dim>     &mesh,
+    std::map<std::pair<unsigned int, unsigned int>, Point<dim>>
+      *edge_middle_points) const
   {
     const double h = (element_size > 0) ? element_size : 0.4 * cell_size;
 
-    if (shape == "gmsh")
-      {
-        read_gmsh_file(mesh_file,
-                       "Membrane/Mesh file",
-                       "3-node triangles",
-                       mesh);
-        return;
-      }
+    if constexpr (dim == 3)
+      if (shape == "gmsh")
+        {
+          // Our own reader: deal.II 9.4's GridIn reads first-order cells
+          // only, and a curved membrane needs its 6-node triangles.
+          EdgeMiddlePoints middle_points;
+          read_gmsh_surface(mesh_file,
+                            "Membrane/Mesh file",
+                            mesh,
+                            middle_points);
+          if (edge_middle_points)
+            *edge_middle_points = middle_points;
+          return;
+        }
 
     // In 3D the quads of the extrusion are split along a diagonal: both
     // sides at most h / sqrt(2) keep the diagonal at most h.

@@ -300,6 +300,17 @@ namespace fsgmpm
                         "uncompressed, about 4x the size of the compressed "
                         "single-precision VTU files and about 30x faster to "
                         "write). The grid is always VTU.");
+      prm.declare_entry("Membrane output",
+                        "pieces",
+                        Patterns::Selection("pieces|finite elements"),
+                        "How the membrane is written: pieces (its straight "
+                        "elements, the cells at degree 1 and their halves "
+                        "or quarters at degree 2, as ASCII VTU or in "
+                        "HDF5, with tension and stretch per piece, read by "
+                        "doc/scripts) or finite elements (deal.II's DataOut "
+                        "of the MembraneFE cells, quadratic cells at degree "
+                        "2, with tension, minor_tension and stretch per cell "
+                        "and velocity and displacement per node; VTU only).");
       prm.declare_entry("Write grid",
                         "false",
                         Patterns::Bool(),
@@ -500,12 +511,18 @@ namespace fsgmpm
     moving_wall.parse_parameters(prm, dim);
 
     prm.enter_subsection("Output");
-    output_directory    = prm.get("Directory");
-    output_interval     = prm.get_double("Output interval");
-    output_every_steps  = prm.get_integer("Output every n steps");
-    write_particles     = prm.get_bool("Write particles");
-    write_grid          = prm.get_bool("Write grid");
-    output_format       = prm.get("Format");
+    output_directory   = prm.get("Directory");
+    output_interval    = prm.get_double("Output interval");
+    output_every_steps = prm.get_integer("Output every n steps");
+    write_particles    = prm.get_bool("Write particles");
+    write_grid         = prm.get_bool("Write grid");
+    output_format      = prm.get("Format");
+    membrane_output    = prm.get("Membrane output");
+    AssertThrow(membrane_output == "pieces" || output_format == "vtu",
+                ExcMessage("Output/Membrane output = finite elements is "
+                           "written as VTU (deal.II's DataOut); set "
+                           "Output/Format = vtu, or Membrane output = "
+                           "pieces for HDF5."));
     monitor_every_steps = prm.get_integer("Monitor every n steps");
     quiet               = prm.get_bool("Quiet");
     checkpoint_interval = prm.get_double("Checkpoint interval");

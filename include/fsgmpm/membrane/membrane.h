@@ -10,6 +10,7 @@
 
 #include <array>
 #include <limits>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -55,8 +56,16 @@ namespace fsgmpm
   public:
     static constexpr unsigned int nodes_per_element = dim;
 
+    /// @p edge_middle_points: at degree 2, the initial positions of the
+    /// edge support points of a curved mesh (a second-order Gmsh surface),
+    /// keyed by the edge's two vertex indices in @p mesh (smaller first);
+    /// edges not listed take their straight midpoint (in 2D, the arc
+    /// through the neighbours). Ignored at degree 1.
     Membrane(const Triangulation<dim - 1, dim> &mesh,
-             const MembraneProperties          &properties);
+             const MembraneProperties          &properties,
+             const std::map<std::pair<unsigned int, unsigned int>, Point<dim>>
+               &edge_middle_points
+             = {});
 
     /// (Re)builds the finite elements from the rest structure (rest_vertex,
     /// fe_cells, vertex_node, edge_node): after a split, or after the
@@ -69,6 +78,28 @@ namespace fsgmpm
     get_fe() const
     {
       return *fe;
+    }
+
+    /// The node of support point (DoF) @p i of get_fe().
+    unsigned int
+    support_point_node(const unsigned int i) const
+    {
+      return node_of_dof[i];
+    }
+
+    /// The active cell of get_fe() that cell @p c of fe_cells is.
+    unsigned int
+    active_cell_of(const unsigned int c) const
+    {
+      return active_cell_of_cell[c];
+    }
+
+    /// Per active cell of get_fe(): the principal membrane stresses {major,
+    /// minor} (N/m) of the last compute_forces() (MembraneFE).
+    const std::vector<std::array<double, 2>> &
+    get_cell_stress() const
+    {
+      return cell_stress;
     }
 
     unsigned int
@@ -268,9 +299,15 @@ namespace fsgmpm
     void
     add_elements_of_cell(const unsigned int c);
 
-    /// The index in edge_node of edge (v, w); invalid if none.
+    /// The index in edge_node of edge (v, w); invalid if none. Looked up
+    /// in edge_lookup (rebuilt when invalidated: edge_node is public, and
+    /// a checkpoint or a split rewrites it), so that building a large
+    /// degree-2 membrane is not quadratic in its edges.
     unsigned int
     edge_index(const unsigned int v, const unsigned int w) const;
+    mutable std::map<std::pair<unsigned int, unsigned int>, unsigned int>
+                 edge_lookup;
+    mutable bool edge_lookup_valid = true;
 
     /// The node at the midpoint of edge (v, w); invalid if none.
     unsigned int

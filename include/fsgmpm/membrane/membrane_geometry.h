@@ -8,6 +8,7 @@
 #include <fsgmpm/membrane/membrane.h>
 
 #include <limits>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,11 +53,17 @@ namespace fsgmpm
     outline(const double cell_size, const double size_factor = 1.) const;
 
     /// The codimension-one mesh: the closed polygon or ellipse in 2D, the
-    /// extruded surface over z in [z0, z1] or the Gmsh surface in 3D.
+    /// extruded surface over z in [z0, z1] or the Gmsh surface in 3D. A
+    /// Gmsh surface of second-order (6-node) triangles also gives the
+    /// middle nodes of its curved edges in @p edge_middle_points (if
+    /// given), for Membrane's constructor.
     void
     make_mesh(const double                     cell_size,
               const std::pair<double, double> &z_range,
-              Triangulation<dim - 1, dim>     &mesh) const;
+              Triangulation<dim - 1, dim>     &mesh,
+              std::map<std::pair<unsigned int, unsigned int>, Point<dim>>
+                *edge_middle_points
+              = nullptr) const;
   };
 
   namespace MembraneGeometry
@@ -78,6 +85,11 @@ namespace fsgmpm
                    const double       a,
                    const double       b,
                    const unsigned int n);
+
+    /// Signed area of the closed polygon @p outline (shoelace; positive
+    /// counter-clockwise).
+    double
+    signed_area(const std::vector<Point<2>> &outline);
   } // namespace MembraneGeometry
 } // namespace fsgmpm
 

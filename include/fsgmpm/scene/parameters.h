@@ -88,7 +88,9 @@ namespace fsgmpm
     bool         write_particles;
     bool         write_grid;
     /// "vtu" or "hdf5" (points and membrane).
-    std::string  output_format;
+    std::string output_format;
+    /// "pieces" or "finite elements" (io/membrane_fe_output.h).
+    std::string  membrane_output;
     unsigned int monitor_every_steps;
     bool         quiet;
   };
