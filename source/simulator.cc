@@ -15,6 +15,7 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -170,14 +171,8 @@ namespace fsgmpm
     if (membrane)
       mpm_step->attach_membrane(*membrane, membrane_split_length);
 
-    scene_monitors = std::make_unique<SceneMonitors<dim>>(prm,
-                                                          grid->lower_corner,
-                                                          cell_size,
-                                                          bodies.size());
-    AssertThrow(!scene_monitors->needs_membrane() || membrane,
-                ExcMessage("Monitors/Scene monitors names a membrane column "
-                           "(height, width, contact_width, ...), but "
-                           "Membrane/Enabled is false."));
+    scene_monitors = std::make_unique<SceneMonitors<dim>>(
+      prm, grid->lower_corner, cell_size, bodies.size(), membrane != nullptr);
 
     reinitialize_state();
   }
@@ -914,6 +909,28 @@ namespace fsgmpm
       = sizeof(double) * (1 + 5 * dim + dim) + 2 * sizeof(unsigned int);
     return (per_cell * grid->n_cells() + per_node * grid->n_nodes())
            / particles.size();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::get_scene_monitor_value(const std::string &column) const
+  {
+    const auto &names = scene_monitors->names();
+    const auto  it    = std::find(names.begin(), names.end(), column);
+    if (it == names.end())
+      {
+        std::string known;
+        for (const auto &name : names)
+          known += (known.empty() ? "" : ", ") + name;
+        AssertThrow(false,
+                    ExcMessage("The scene monitors have no column " + column
+                               + " (columns: "
+                               + (known.empty() ? "none" : known)
+                               + "; Monitors/Scene monitors selects them)."));
+      }
+    return get_scene_monitors()[it - names.begin()];
   }
 
   template class Simulator<2>;

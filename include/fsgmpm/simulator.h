@@ -7,9 +7,9 @@
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/io/particle_output.h>
-#include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/monitors/scene_monitors.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/monitors.h>
 #include <fsgmpm/run/stability_guard.h>
@@ -121,6 +121,17 @@ namespace fsgmpm
     {
       return scene_monitors->names();
     }
+    /// The scene monitor registered as @p name (monitors/monitor_factory.h)
+    /// if Monitors/Scene monitors selects it; throws otherwise.
+    const SceneMonitor<dim> &
+    get_scene_monitor(const std::string &name) const
+    {
+      return scene_monitors->get(name);
+    }
+    /// The current value of the scene monitors' column @p column (e.g.
+    /// front_position); throws, naming the columns, if there is none.
+    double
+    get_scene_monitor_value(const std::string &column) const;
     const std::vector<std::unique_ptr<Material>> &
     get_materials() const
     {

@@ -4,6 +4,7 @@
 #include <fsgmpm/scene/parameter_parsing.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace fsgmpm
 {
@@ -35,6 +36,28 @@ namespace fsgmpm
                                + "> is not a finite number."));
       }
     return v;
+  }
+
+
+
+  double
+  parse_auto_or_double(const std::string &text,
+                       const double       fallback,
+                       const std::string &path)
+  {
+    const std::string t = Utilities::trim(text);
+    if (t == "auto")
+      return fallback;
+    std::istringstream in(t);
+    double             x = 0;
+    in >> x;
+    AssertThrow(!in.fail() && in.eof() && std::isfinite(x)
+                  && std::abs(x) <= 1e9,
+                ExcMessage(path
+                           + " must be auto or a finite number (m, within "
+                             "+-1e9); got <"
+                           + text + ">."));
+    return x;
   }
 
 

@@ -2,8 +2,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/io/format.h>
-#include <fsgmpm/io/scene_monitors.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
+#include <fsgmpm/monitors/scene_monitors.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/parameters.h>

@@ -79,6 +79,8 @@ expect_error "zero membrane stiffness" "Axial stiffness" "$g" --set "Membrane/Ax
 expect_error "membrane fill in velocity field 1" "Bodies/Body 0/Shape = membrane needs Velocity field = 0" "$2/../prm/geocontainer_polygon.prm" --set "Bodies/Body 0/Velocity field=1"
 expect_error "unknown material model" "Material model.*does not match" --set "Bodies/Body 0/Material model=Drucker-Prager"
 expect_error "ground level not a number" "Membrane/Ground level must be a number or none" "$g" --set "Membrane/Ground level=floor"
+expect_error "unknown scene monitor" "Scene monitors.*front_positon.*dam_break" --set "Monitors/Scene monitors=front_positon"
+expect_error "geotube monitor without a membrane" "Scene monitors: height \(scene monitor geotube\) needs a membrane" --set "Monitors/Scene monitors=height"
 
 w="$2/../prm/water_column_collapse_n2.prm"
 expect_error "gate off the grid lines" "Moving wall/Lower corner and Upper corner: the wall's plane x = 0.115 holds no grid node" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Lower corner=0.115, 0" --set "Moving wall/Upper corner=0.115, 0.3"

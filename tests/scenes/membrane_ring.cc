@@ -13,7 +13,7 @@
 //       at 1 s) is a known open defect of NMD next to the membrane (it also
 //       keeps the geotube from converging; doc/membrane_validation.md).
 
-#include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/monitors/geotube_monitor.h>
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 

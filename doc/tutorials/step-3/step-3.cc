@@ -73,7 +73,7 @@
 // solution, a header-only part of the library.
 #include <deal.II/base/parameter_handler.h>
 
-#include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/monitors/geotube_monitor.h>
 #include <fsgmpm/reference/geotube_reference.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>

@@ -61,7 +61,7 @@
 // that crossed the membrane).
 #include <deal.II/base/parameter_handler.h>
 
-#include <fsgmpm/io/container_monitors.h>
+#include <fsgmpm/monitors/container_monitor.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>

@@ -28,6 +28,13 @@ namespace fsgmpm
   std::vector<Point<2>>
   parse_polygon(const std::string &text, const std::string &path);
 
+  /// A length that may be "auto": @p fallback for auto, else a finite
+  /// number within +-1e9, throwing a message that names @p path.
+  double
+  parse_auto_or_double(const std::string &text,
+                       const double       fallback,
+                       const std::string &path);
+
   /// The dimension requested by Simulation/Dimension.
   unsigned int
   get_dimension(ParameterHandler &prm);

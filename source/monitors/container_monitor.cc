@@ -1,4 +1,5 @@
-#include <fsgmpm/io/container_monitors.h>
+#include <fsgmpm/monitors/container_monitor.h>
+#include <fsgmpm/monitors/monitor_factory.h>
 #include <fsgmpm/particles/body_shape.h>
 
 #include <algorithm>
@@ -132,26 +133,26 @@ namespace fsgmpm
 
 
   template <int dim>
-  std::map<std::string, double>
-  body_monitors(const ParticleStore<dim> &particles,
-                const unsigned int        n_bodies)
+  ContainerMonitor<dim>::ContainerMonitor(ParameterHandler &,
+                                          const MonitorSetup<dim> &setup)
+    : container(setup.container_body)
+  {}
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContainerMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
   {
-    std::vector<double> mass(n_bodies, 0.), kinetic(n_bodies, 0.);
-    for (unsigned int p = 0; p < particles.size(); ++p)
-      if (particles.body_id[p] < n_bodies)
-        {
-          mass[particles.body_id[p]] += particles.mass[p];
-          kinetic[particles.body_id[p]]
-            += 0.5 * particles.mass[p] * particles.velocity[p].norm_square();
-        }
-    std::map<std::string, double> values;
-    for (unsigned int b = 0; b < n_bodies; ++b)
-      {
-        values["body_mass_" + std::to_string(b)]           = mass[b];
-        values["body_kinetic_energy_" + std::to_string(b)] = kinetic[b];
-      }
-    return values;
+    const auto values
+      = container_monitors(context.particles, context.membrane, container);
+    std::vector<double> row;
+    for (const auto &name : container_monitor_names())
+      row.push_back(values.at(name));
+    return row;
   }
+
+
 
   template std::map<std::string, double>
   container_monitors<2>(const ParticleStore<2> &,
@@ -161,8 +162,12 @@ namespace fsgmpm
   container_monitors<3>(const ParticleStore<3> &,
                         const Membrane<3> *,
                         const unsigned int);
-  template std::map<std::string, double>
-  body_monitors<2>(const ParticleStore<2> &, const unsigned int);
-  template std::map<std::string, double>
-  body_monitors<3>(const ParticleStore<3> &, const unsigned int);
+  template class ContainerMonitor<2>;
+  template class ContainerMonitor<3>;
+
+  FSGMPM_REGISTER_MONITOR(ContainerMonitor,
+                          "container",
+                          "centre, vertical velocity, tilt and area of the "
+                          "body the membrane holds, and the points that "
+                          "crossed the membrane either way")
 } // namespace fsgmpm

@@ -1,7 +1,8 @@
-#ifndef fsgmpm_io_container_monitors_h
-#define fsgmpm_io_container_monitors_h
+#ifndef fsgmpm_monitors_container_monitor_h
+#define fsgmpm_monitors_container_monitor_h
 
 #include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/monitors/scene_monitor.h>
 #include <fsgmpm/particles/particle_store.h>
 
 #include <map>
@@ -32,16 +33,39 @@ namespace fsgmpm
                      const Membrane<dim>      *membrane,
                      const unsigned int        container);
 
-  /// Per body b: body_mass_b (kg; per metre in 2D) and
-  /// body_kinetic_energy_b (J).
-  template <int dim>
-  std::map<std::string, double>
-  body_monitors(const ParticleStore<dim> &particles,
-                const unsigned int        n_bodies);
-
   /// Names of the columns container_monitors() provides.
   const std::vector<std::string> &
   container_monitor_names();
+
+  /**
+   * Scene monitor "container": the columns of container_monitors() in the
+   * order of container_monitor_names(), for the body of Monitors/Container
+   * body. A membrane is optional (without one the inside counts are zero).
+   */
+  template <int dim>
+  class ContainerMonitor : public SceneMonitor<dim>
+  {
+  public:
+    static std::vector<std::string>
+    quantities()
+    {
+      return container_monitor_names();
+    }
+
+    ContainerMonitor(ParameterHandler &prm, const MonitorSetup<dim> &setup);
+
+    std::vector<std::string>
+    column_names() const override
+    {
+      return container_monitor_names();
+    }
+
+    std::vector<double>
+    evaluate(const MonitorContext<dim> &context) const override;
+
+  private:
+    unsigned int container;
+  };
 } // namespace fsgmpm
 
 #endif

@@ -1,0 +1,104 @@
+#ifndef fsgmpm_monitors_scene_monitor_h
+#define fsgmpm_monitors_scene_monitor_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/particles/particle_store.h>
+
+#include <string>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * What a scene monitor learns of the scene when it is built: the mesh and
+   * the bodies, and the references that several monitors share (entries of
+   * subsection Monitors that SceneMonitors reads, "auto" already resolved).
+   */
+  template <int dim>
+  struct MonitorSetup
+  {
+    Point<dim>   lower_corner; ///< the mesh's lower corner
+    Point<dim>   cell_size;    ///< per direction (Grid/Cell size)
+    unsigned int n_bodies = 1;
+    /// Monitors/Container body: the body the membrane holds (the fill).
+    unsigned int container_body = 0;
+    double       wall_x         = 0; ///< Monitors/Wall position
+    double       base_y         = 0; ///< Monitors/Base position
+    bool         has_membrane   = false;
+  };
+
+  /// What a scene monitor sees each time it is evaluated.
+  template <int dim>
+  struct MonitorContext
+  {
+    const ParticleStore<dim> &particles;
+    /// The scene's membrane, or nullptr if it has none.
+    const Membrane<dim> *membrane;
+  };
+
+  /**
+   * One named monitor: a few columns of monitors.csv computed from the
+   * state, as ASPECT's postprocessors are. A monitor is a class template
+   * (template <int dim>) derived from this class, with
+   * - a constructor (ParameterHandler &, const MonitorSetup<dim> &): the
+   *   ParameterHandler is in subsection Monitors, where the monitor reads
+   *   the entries it declared;
+   * - optionally the static functions declare_parameters(ParameterHandler
+   *   &), which declares its entries in subsection Monitors (best in a
+   *   subsection of its own: entries are shared by all monitors), and
+   *   quantities(), the names besides its own under which parts of its
+   *   columns may be selected (columns_of());
+   * registered by name with FSGMPM_REGISTER_MONITOR
+   * (monitors/monitor_factory.h) and selected in Monitors/Scene monitors.
+   */
+  template <int dim>
+  class SceneMonitor
+  {
+  public:
+    virtual ~SceneMonitor() = default;
+
+    /// No entries of its own (a monitor that has some hides this one).
+    static void
+    declare_parameters(ParameterHandler &)
+    {}
+
+    /// No names but the monitor's own (a monitor that offers a part of its
+    /// columns by name hides this one).
+    static std::vector<std::string>
+    quantities()
+    {
+      return {};
+    }
+
+    /// Its columns, in the order evaluate() returns their values.
+    virtual std::vector<std::string>
+    column_names() const = 0;
+
+    /// The columns selected by @p quantity, one of quantities(): by default
+    /// the column of that name; per-body quantities give one each.
+    virtual std::vector<std::string>
+    columns_of(const std::string &quantity) const
+    {
+      return {quantity};
+    }
+
+    /// The values of column_names() for the current state.
+    virtual std::vector<double>
+    evaluate(const MonitorContext<dim> &context) const = 0;
+
+    /// True if evaluate() needs a membrane; the scene refuses the monitor
+    /// without one (Membrane/Enabled).
+    virtual bool
+    needs_membrane() const
+    {
+      return false;
+    }
+  };
+} // namespace fsgmpm
+
+#endif

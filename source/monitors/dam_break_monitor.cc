@@ -1,0 +1,74 @@
+#include <fsgmpm/monitors/dam_break_monitor.h>
+#include <fsgmpm/monitors/monitor_factory.h>
+#include <fsgmpm/scene/parameter_parsing.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fsgmpm
+{
+  template <int dim>
+  void
+  DamBreakMonitor<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Row height",
+                      "auto",
+                      Patterns::Anything(),
+                      "Height of the bottom cell row (m); auto: the cell size "
+                      "in y.");
+    prm.declare_entry("Column width",
+                      "auto",
+                      Patterns::Anything(),
+                      "Width of the strip at the wall for column_height (m); "
+                      "auto: the cell size in x.");
+  }
+
+
+
+  template <int dim>
+  DamBreakMonitor<dim>::DamBreakMonitor(ParameterHandler        &prm,
+                                        const MonitorSetup<dim> &setup)
+    : wall_x(setup.wall_x)
+    , base_y(setup.base_y)
+    , row_height(parse_auto_or_double(prm.get("Row height"),
+                                      setup.cell_size[1],
+                                      "Monitors/Row height"))
+    , column_width(parse_auto_or_double(prm.get("Column width"),
+                                        setup.cell_size[0],
+                                        "Monitors/Column width"))
+  {}
+
+
+
+  template <int dim>
+  std::vector<double>
+  DamBreakMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
+  {
+    const ParticleStore<dim> &particles = context.particles;
+    double                    front = 0, height = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      {
+        if (particles.free_surface[p])
+          continue;
+        const double half_spacing
+          = 0.5
+            * (dim == 2 ? std::sqrt(particles.volume[p])
+                        : std::cbrt(particles.volume[p]));
+        const double x = particles.position[p][0] - wall_x;
+        const double y = particles.position[p][1] - base_y;
+        if (y < row_height)
+          front = std::max(front, x + half_spacing);
+        if (x < column_width)
+          height = std::max(height, y + half_spacing);
+      }
+    return {front, height};
+  }
+
+  template class DamBreakMonitor<2>;
+  template class DamBreakMonitor<3>;
+
+  FSGMPM_REGISTER_MONITOR(DamBreakMonitor,
+                          "dam_break",
+                          "surge front from the wall in the bottom cell row "
+                          "and column height at the wall (m)")
+} // namespace fsgmpm

@@ -1,0 +1,47 @@
+#include <fsgmpm/monitors/deposit_monitor.h>
+#include <fsgmpm/monitors/monitor_factory.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fsgmpm
+{
+  template <int dim>
+  DepositMonitor<dim>::DepositMonitor(ParameterHandler &,
+                                      const MonitorSetup<dim> &setup)
+    : wall_x(setup.wall_x)
+    , base_y(setup.base_y)
+  {}
+
+
+
+  template <int dim>
+  std::vector<double>
+  DepositMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
+  {
+    const ParticleStore<dim> &particles = context.particles;
+    double                    runout = 0, top = 0;
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      {
+        const double half_spacing
+          = 0.5
+            * (dim == 2 ? std::sqrt(particles.volume[p])
+                        : std::cbrt(particles.volume[p]));
+        const double x = particles.position[p][0] - wall_x;
+        const double y = particles.position[p][1] - base_y;
+        // A point resting on the base makes the deposit one spacing thick.
+        if (y + half_spacing >= 2 * half_spacing * (1 - 1e-3))
+          runout = std::max(runout, x + half_spacing);
+        top = std::max(top, y + half_spacing);
+      }
+    return {runout, top};
+  }
+
+  template class DepositMonitor<2>;
+  template class DepositMonitor<3>;
+
+  FSGMPM_REGISTER_MONITOR(DepositMonitor,
+                          "deposit",
+                          "run-out from the wall where the deposit is a "
+                          "point spacing thick, and its height (m)")
+} // namespace fsgmpm
