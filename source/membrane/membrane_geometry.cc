@@ -171,8 +171,12 @@ namespace fsgmpm
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
-                        "Shape = gmsh: Gmsh file of the membrane surface "
-                        "(3-node triangles).");
+                        "Shape = gmsh: ASCII Gmsh file (format 2.2 or 4.1) "
+                        "of the membrane surface, 3-node or 6-node "
+                        "triangles; at Element degree = 2 the 6-node "
+                        "triangles' edge nodes are the middle nodes (the "
+                        "curved surface Gmsh meshed), else the edge "
+                        "midpoints (relative to the working directory).");
       prm.declare_entry("Element size",
                         "0",
                         Patterns::Double(0),
