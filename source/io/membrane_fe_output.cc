@@ -51,10 +51,17 @@ namespace fsgmpm
         ++scalar_cell;
       }
 
-    // Per active cell: the stresses and the stretch, from its straight
-    // pieces (the cell itself at degree 1).
-    const unsigned int  n_cells = scalar.get_triangulation().n_active_cells();
-    const auto         &stress  = membrane.get_cell_stress();
+    // Per active cell: the principal stresses, evaluated here from the
+    // current positions (so that the file never depends on when forces were
+    // last computed, e.g. right after a restart), and the stretch from the
+    // cell's straight pieces (the cell itself at degree 1).
+    const unsigned int n_cells = scalar.get_triangulation().n_active_cells();
+    std::vector<Point<dim>> x(fe.n_support_points());
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x[i] = membrane.position[membrane.support_point_node(i)];
+    std::vector<Tensor<1, dim>>        force;
+    std::vector<std::array<double, 2>> stress;
+    fe.internal_forces(x, force, &stress);
     Vector<double>      major(n_cells), minor(n_cells), stretch(n_cells);
     std::vector<double> size(n_cells, 0.), rest_size(n_cells, 0.);
     for (unsigned int e = 0; e < membrane.n_elements(); ++e)

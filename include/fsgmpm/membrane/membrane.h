@@ -94,14 +94,6 @@ namespace fsgmpm
       return active_cell_of_cell[c];
     }
 
-    /// Per active cell of get_fe(): the principal membrane stresses {major,
-    /// minor} (N/m) of the last compute_forces() (MembraneFE).
-    const std::vector<std::array<double, 2>> &
-    get_cell_stress() const
-    {
-      return cell_stress;
-    }
-
     unsigned int
     n_nodes() const
     {
