@@ -118,8 +118,9 @@ namespace fsgmpm
               if (ascii != 0)
                 fail("is a binary Gmsh file; save it as ASCII (Gmsh option "
                      "Mesh.Binary = 0).");
+              // 4.0 lays out $Nodes and $Elements differently from 4.1.
               if (!(version >= 2 && version < 3)
-                  && !(version >= 4 && version < 5))
+                  && !(version > 4.05 && version < 5))
                 fail("has Gmsh format " + std::to_string(version)
                      + "; formats 2.2 and 4.1 are read.");
             }

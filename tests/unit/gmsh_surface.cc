@@ -207,6 +207,9 @@ TEST(GmshSurface, BadFilesSayWhatToFix)
                        "$EndElements\n")
               .find("no triangles"),
             std::string::npos);
+  EXPECT_NE(error_of("$MeshFormat\n4 0 8\n$EndMeshFormat\n")
+              .find("formats 2.2 and 4.1 are read"),
+            std::string::npos);
   EXPECT_NE(error_of("no mesh here\n").find("not a Gmsh mesh"),
             std::string::npos);
   // Two triangles sharing edge 1-2 with different middle nodes (4 and 5).
