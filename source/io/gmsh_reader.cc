@@ -57,14 +57,4 @@ namespace fsgmpm
                        const std::string &,
                        const std::string &,
                        Triangulation<3, 3> &);
-  template void
-  read_gmsh_file<1, 2>(const std::string &,
-                       const std::string &,
-                       const std::string &,
-                       Triangulation<1, 2> &);
-  template void
-  read_gmsh_file<2, 3>(const std::string &,
-                       const std::string &,
-                       const std::string &,
-                       Triangulation<2, 3> &);
 } // namespace fsgmpm

@@ -11,7 +11,8 @@ namespace fsgmpm
 
   /**
    * Read the Gmsh file @p file_name into @p triangulation (the background
-   * mesh, dim = spacedim, or a membrane surface, dim = spacedim - 1). Any
+   * mesh, dim = spacedim = 2 or 3; membrane surfaces, which may be of
+   * second order, have their own reader, io/gmsh_surface.h). Any
    * failure (a missing or unreadable file, a file that is not a mesh, a
    * mesh of other cells or dimension, no cells) throws an ExcMessage that
    * names the parameter @p parameter (e.g. "Grid/Mesh file") and says that
