@@ -1,15 +1,13 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <fsgmpm/grid/mesh_generation.h>
-#include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/format.h>
-#include <fsgmpm/io/grid_output.h>
-#include <fsgmpm/io/membrane_fe_output.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/run/energy_balance.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/simulator.h>
 #include <fsgmpm/step/cell_loops.h>
@@ -48,7 +46,7 @@ namespace fsgmpm
       settings.apic_affine_remap          = params.apic_affine_remap;
       settings.flip_noise_relaxation_time = params.flip_noise_relaxation_time;
       settings.local_damping              = params.local_damping;
-      settings.courant                    = params.courant;
+      settings.courant                    = params.time_step.courant;
       settings.mass_scaling               = params.mass_scaling;
       settings.contact_friction           = params.contact_friction;
       settings.contact_volume_fraction    = params.contact_volume_fraction;
@@ -91,10 +89,12 @@ namespace fsgmpm
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler &prm)
     : params(prm)
-    , stability_guard({params.energy_creation_tolerance,
-                       params.ke_growth_factor,
-                       params.ke_growth_window})
+    , time_step_control(params.time_step)
+    , relaxation(params.relaxation)
+    , stability_guard(params.stability)
     , run_stage_seconds(run_stage_names.size(), 0.)
+    , output_schedule(params.output_interval, params.output_every_steps)
+    , checkpoint_schedule(params.checkpoint_interval)
     , parameter_listing(parameter_values(prm))
   {
     if (params.n_threads > 0)
@@ -190,12 +190,10 @@ namespace fsgmpm
     set_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles));
     compute_monitors();
-    previous_kinetic_energy  = monitors.kinetic_energy;
-    initial_potential_energy = 0;
-    for (unsigned int p = 0; p < particles.size(); ++p)
-      initial_potential_energy
-        -= particles.mass[p]
-           * (params.gravity * (particles.position[p] - grid->lower_corner));
+    relaxation.reset(monitors,
+                     EnergyBalance::potential_energy_above(particles,
+                                                           params.gravity,
+                                                           grid->lower_corner));
     stability_guard.reset(monitors);
   }
 
@@ -391,50 +389,8 @@ namespace fsgmpm
   void
   Simulator<dim>::compute_monitors()
   {
-    // Partial sums per occupied cell in parallel, then summed in cell order:
-    // the result does not depend on the number of threads.
-    const auto                        &cells = particles.occupied_cells;
-    std::vector<std::array<double, 3>> partial(cells.size());
-    CellLoops::parallel_range(
-      cells.size(),
-      [&](const unsigned int b, const unsigned int e) {
-        for (unsigned int i = b; i < e; ++i)
-          {
-            const unsigned int c = cells[i];
-            double             k = 0, s = 0, g = 0;
-            for (unsigned int p = particles.cell_begin[c];
-                 p < particles.cell_end[c];
-                 ++p)
-              {
-                k += 0.5 * particles.mass[p]
-                     * particles.velocity[p].norm_square();
-                s += particles.volume[p]
-                     * materials[particles.material_id[p]]
-                         ->strain_energy_density(particles.stress[p]);
-                g -= particles.mass[p]
-                     * (params.gravity * particles.position[p]);
-              }
-            partial[i] = {{k, s, g}};
-          }
-      },
-      16);
-    double ke = 0, se = 0, pe = 0;
-    for (const auto &q : partial)
-      {
-        ke += q[0];
-        se += q[1];
-        pe += q[2];
-      }
-    if (membrane)
-      {
-        ke += membrane->kinetic_energy();
-        se += membrane->strain_energy();
-        for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
-          pe -= membrane->mass[a] * (params.gravity * membrane->position[a]);
-      }
-    monitors.kinetic_energy   = ke;
-    monitors.strain_energy    = se;
-    monitors.potential_energy = pe;
+    EnergyBalance::compute_energies(
+      particles, materials, membrane.get(), params.gravity, monitors);
   }
 
 
@@ -461,8 +417,8 @@ namespace fsgmpm
             }
         }
       std::ostringstream s;
-      s << "unstable at step " << step << ", t = " << time << " s, dt = " << dt
-        << " s: " << what;
+      s << "unstable at step " << step << ", t = " << time
+        << " s, dt = " << time_step_control.dt() << " s: " << what;
       if (particles.size() > 0)
         s << "; fastest material point (body " << particles.body_id[worst]
           << ") at "
@@ -508,32 +464,15 @@ namespace fsgmpm
     // P2G first: the membrane's nodal time-step bound needs the nodal
     // masses (p2g does not depend on dt).
     mpm_step->transfer_to_grid();
-    const double dt_stable = mpm_step->stable_time_step();
-    if (params.fixed_dt > 0)
-      {
-        dt = params.fixed_dt;
-        if (dt > dt_stable / params.courant)
-          {
-            termination = Termination::unstable;
-            diagnosis   = "Simulation/Fixed time step = " + format(dt)
-                        + " s exceeds the explicit stability limit "
-                        + format(dt_stable / params.courant) + " s at step "
-                        + std::to_string(step)
-                        + "; use a smaller fixed time step or 0 (automatic).";
-            return false;
-          }
-      }
-    else
-      dt = dt_stable;
-    if (params.end_time - time < dt)
-      dt = params.end_time - time;
-    if (!(dt > 0) || !std::isfinite(dt))
+    const std::string problem
+      = time_step_control.choose(mpm_step->stable_time_step(), time, step);
+    if (!problem.empty())
       {
         termination = Termination::unstable;
-        diagnosis   = "the time step became " + format(dt) + " s at step "
-                    + std::to_string(step) + ".";
+        diagnosis   = problem;
         return false;
       }
+    const double dt = time_step_control.dt();
 
     const typename MpmStep<dim>::Result result
       = mpm_step->advance(dt, time + dt, current_gravity());
@@ -551,132 +490,38 @@ namespace fsgmpm
     particle_updates += particles.size();
     time += dt;
     ++step;
-    dt_min = (step == 1) ? dt : std::min(dt_min, dt);
-    dt_max = std::max(dt_max, dt);
+    time_step_control.record_step(step);
 
     bool ok = true;
     timed(monitor_stage, [&] {
       compute_monitors();
-      monitors.lost_particles += result.lost_particles;
-      monitors.external_work += result.grid.external_work_increment;
-      monitors.dissipated_energy += result.grid.damping_work_increment;
-
-      // Eq. (30) and the rest criterion from the nodal (remapped)
-      // velocities.
-      double nodal_ke = 0;
-      for (const unsigned int i : nodes.active_nodes)
-        nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
-      monitors.grid_kinetic_energy = nodal_ke;
-      monitors.dr_energy_ratio     = (monitors.external_work > 0)
-                                       ? nodal_ke / monitors.external_work
-                                       : std::numeric_limits<double>::infinity();
-      monitors.dr_force_ratio      = (result.grid.external_norm_sq > 0)
-                                       ? std::sqrt(result.grid.unbalanced_norm_sq
-                                              / result.grid.external_norm_sq)
-                                       : std::numeric_limits<double>::infinity();
+      EnergyBalance::add_step(result.grid,
+                              result.lost_particles,
+                              nodes,
+                              monitors);
     });
     timed(kinetic_damping_stage, [&] {
-      if (params.kinetic_damping
-          && monitors.kinetic_energy < previous_kinetic_energy)
-        {
-          // A kinetic-energy peak has passed: remove all kinetic energy.
-          monitors.dissipated_energy += monitors.kinetic_energy;
-          for (auto &v : particles.velocity)
-            v = Tensor<1, dim>();
-          for (auto &C : particles.affine_velocity)
-            C = Tensor<2, dim>();
-          // The membrane's nodes too: they carry momentum of their own
-          // (Eq. 20 remaps it), which would set the fill moving again.
-          if (membrane)
-            for (auto &v : membrane->velocity)
-              v = Tensor<1, dim>();
-          monitors.kinetic_energy = 0;
-        }
-      previous_kinetic_energy = monitors.kinetic_energy;
+      relaxation.apply_kinetic_damping(monitors, particles, membrane.get());
     });
+    Termination relaxed = Termination::running;
     timed(monitor_stage, [&] {
-      ok = check_stability(result.displacement_ratio);
-
-      // Convergence is only meaningful once the full load is applied.
-      if (time >= params.gravity_ramp_time
-          && monitors.dr_energy_ratio <= params.energy_tolerance
-          && monitors.dr_force_ratio <= params.force_tolerance)
-        ++converged_steps;
-      else
-        converged_steps = 0;
+      ok      = check_stability(result.displacement_ratio);
+      relaxed = relaxation.update(monitors, time);
     });
     if (!ok)
       return false;
-
-    // At rest: after it has moved, the kinetic energy stays below the
-    // tolerance for the convergence window (a single step at a turning
-    // point of a bounce is not rest).
-    max_kinetic_energy
-      = std::max(max_kinetic_energy, monitors.grid_kinetic_energy);
-    const double rest_energy = params.rest_tolerance * initial_potential_energy;
-    rest_steps               = (max_kinetic_energy > rest_energy
-                  && monitors.grid_kinetic_energy < rest_energy)
-                                 ? rest_steps + 1
-                                 : 0;
-    if (params.stop_when_at_rest && rest_steps >= params.convergence_window)
+    if (relaxed != Termination::running)
       {
-        termination = Termination::at_rest;
+        termination = relaxed;
         return false;
       }
-    if (params.stop_when_converged
-        && converged_steps >= params.convergence_window)
-      {
-        termination = Termination::dr_converged;
-        return false;
-      }
-    if (time >= params.end_time * (1 - 1e-14)
+    if (time >= params.time_step.end_time * (1 - 1e-14)
         || (params.max_steps > 0 && step >= params.max_steps))
       {
         termination = Termination::end_time;
         return false;
       }
     return true;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::write_output()
-  {
-    const std::string &dir  = params.output_directory;
-    const bool         hdf5 = params.output_format == "hdf5";
-    if (params.write_particles)
-      {
-        particle_output.build_patches(particles, grid.get(), &nodes);
-        if (hdf5)
-          particle_output.write_xdmf(*particle_xdmf, time);
-        else
-          {
-            const std::string name = particle_series->next_file(time);
-            write_file_atomically(dir + "/" + name, [&](std::ostream &out) {
-              particle_output.write_vtu(out);
-            });
-            particle_series->write_pvd();
-          }
-      }
-    if (membrane && hdf5)
-      write_membrane_xdmf(*membrane, *membrane_xdmf, time);
-    else if (membrane)
-      {
-        const std::string name = membrane_series->next_file(time);
-        if (params.membrane_output == "finite elements")
-          write_membrane_fe_vtu(*membrane, dir + "/" + name);
-        else
-          write_membrane_vtu(*membrane, dir + "/" + name);
-        membrane_series->write_pvd();
-      }
-    if (params.write_grid)
-      {
-        const std::string name = grid_series->next_file(time);
-        write_grid_vtu(*grid, nodes, dir + "/" + name);
-        grid_series->write_pvd();
-      }
   }
 
 
@@ -695,17 +540,17 @@ namespace fsgmpm
       {
         fs::remove(fs::path(dir) / "monitors.csv");
         fs::remove_all(fs::path(dir) / "checkpoints");
-        for (const auto &entry : fs::directory_iterator(dir))
-          for (const char *stale : {".vtu", ".pvd", ".h5", ".xdmf"})
-            if (entry.path().extension() == stale)
-              fs::remove(entry.path());
       }
 
-    particle_series = std::make_unique<PvdSeries>(dir, "particles");
-    grid_series     = std::make_unique<PvdSeries>(dir, "grid");
-    membrane_series = std::make_unique<PvdSeries>(dir, "membrane");
-    particle_xdmf   = std::make_unique<XdmfSeries>(dir, "particles");
-    membrane_xdmf   = std::make_unique<XdmfSeries>(dir, "membrane");
+    output = std::make_unique<RunOutput<dim>>(
+      typename RunOutput<dim>::Settings{dir,
+                                        params.output_format == "hdf5",
+                                        params.membrane_output
+                                          == "finite elements",
+                                        params.write_particles,
+                                        params.write_grid});
+    if (!resumed)
+      output->remove_previous_output();
     fs::remove(fs::path(dir) / "membrane_shape.csv");
     // Common columns (SPEC 6), the free-surface fraction where a body
     // detects free surfaces, then the scene's own columns.
@@ -737,39 +582,24 @@ namespace fsgmpm
       // The common columns; the free-surface fraction (the last value)
       // only where a body detects free surfaces.
       const auto          values = monitors.values();
-      std::vector<double> row    = {time, double(step), dt};
+      std::vector<double> row    = {time, double(step), time_step_control.dt()};
       row.insert(row.end(), values.begin(), values.end() - (detecting ? 0 : 1));
       for (const double v : scene_monitors->evaluate(particles, membrane.get()))
         row.push_back(v);
       monitor_file->write_row(row);
     };
-    const bool interval_output = params.output_interval > 0;
     const bool any_output
       = (params.write_particles || params.write_grid || membrane)
-        && (interval_output || params.output_every_steps > 0);
+        && output_schedule.active();
+    auto write_output
+      = [&] { output->write(time, particles, *grid, nodes, membrane.get()); };
     if (resumed)
-      {
-        // The series as they were at the checkpoint; files written after
-        // it are written again under the same names.
-        PvdSeries *series[3]
-          = {particle_series.get(), grid_series.get(), membrane_series.get()};
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            for (const double t : resume_series_times[k])
-              series[k]->next_file(t);
-            if (!resume_series_times[k].empty())
-              series[k]->write_pvd();
-          }
-        particle_xdmf->restore(resume_xdmf_records[0]);
-        membrane_xdmf->restore(resume_xdmf_records[1]);
-      }
+      output->restore(resume_output);
     else
       {
         write_monitor_row();
         if (any_output)
           write_output();
-        next_output_time     = params.output_interval;
-        next_checkpoint_time = params.checkpoint_interval;
       }
     const double start_time = time;
 
@@ -789,35 +619,20 @@ namespace fsgmpm
           break;
         if (step % params.monitor_every_steps == 0 || !running)
           write_monitor_row();
-        const bool output_due = interval_output
-                                  ? (time >= next_output_time * (1 - 1e-12))
-                                  : (params.output_every_steps > 0
-                                     && step % params.output_every_steps == 0);
-        if (any_output && (output_due || !running) && last_output_step != step)
+        if (any_output && output_schedule.due(time, step, !running))
           {
             const auto t0 = Clock::now();
             write_output();
             run_stage_seconds[output_stage]
               += std::chrono::duration<double>(Clock::now() - t0).count();
-            last_output_step = step;
-            // The next multiple of the interval after now (a loop adding
-            // the interval would never end when it is below the round-off
-            // of the time).
-            if (interval_output && next_output_time <= time * (1 + 1e-12))
-              next_output_time
-                = params.output_interval
-                  * (std::floor(time * (1 + 1e-12) / params.output_interval)
-                     + 1);
+            output_schedule.written(time, step);
           }
-        if (params.checkpoint_interval > 0 && running
-            && time >= next_checkpoint_time * (1 - 1e-12))
+        if (checkpoint_schedule.active() && running
+            && checkpoint_schedule.due(time, step))
           {
             write_checkpoint(
               std::chrono::duration<double>(Clock::now() - start).count());
-            next_checkpoint_time
-              = params.checkpoint_interval
-                * (std::floor(time * (1 + 1e-12) / params.checkpoint_interval)
-                   + 1);
+            checkpoint_schedule.written(time, step);
           }
         if (!params.quiet
             && std::chrono::duration<double>(Clock::now() - last_progress)
@@ -827,11 +642,12 @@ namespace fsgmpm
             last_progress = Clock::now();
             const double elapsed
               = std::chrono::duration<double>(last_progress - start).count();
-            const double eta = elapsed * (params.end_time - time)
+            const double eta = elapsed * (params.time_step.end_time - time)
                                / std::max(time - start_time, 1e-300);
             std::cout << "  t = " << std::setprecision(4) << time << " s  step "
-                      << step << "  dt = " << dt << " s  ETA "
-                      << std::setprecision(3) << eta << " s" << std::endl;
+                      << step << "  dt = " << time_step_control.dt()
+                      << " s  ETA " << std::setprecision(3) << eta << " s"
+                      << std::endl;
           }
       }
 
@@ -885,8 +701,8 @@ namespace fsgmpm
          {"threads", std::to_string(MultithreadInfo::n_threads())},
          {"mpi_ranks", "1"},
          {"lost_particles", std::to_string(monitors.lost_particles)},
-         {"dt_min", json_number(dt_min)},
-         {"dt_max", json_number(dt_max)},
+         {"dt_min", json_number(time_step_control.dt_min())},
+         {"dt_max", json_number(time_step_control.dt_max())},
          {"termination", json_string(to_string(termination))},
          {"diagnosis", json_string(diagnosis)},
          {"bytes_per_particle", json_number(particles.bytes_per_particle())},

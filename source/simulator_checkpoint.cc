@@ -49,6 +49,22 @@ namespace fsgmpm
       return text;
     }
 
+    /// The lines of a listing in alphabetical order: the comparison does
+    /// not depend on the order in which the parameters were declared.
+    std::string
+    sorted_lines(const std::string &text)
+    {
+      std::istringstream       in(text);
+      std::vector<std::string> lines;
+      for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+      std::sort(lines.begin(), lines.end());
+      std::string sorted;
+      for (const auto &line : lines)
+        sorted += line + "\n";
+      return sorted;
+    }
+
     /// The checkpoints in @p directory, newest first (the names carry the
     /// step, zero-padded).
     std::vector<fs::path>
@@ -93,33 +109,28 @@ namespace fsgmpm
       out.put("fsgmpm/parameters", listing_text(parameter_listing));
 
       out.put("run/time", time);
-      out.put("run/dt", std::vector<double>{dt, dt_min, dt_max});
+      out.put("run/dt", time_step_control.state());
       out.put("run/step", std::vector<unsigned int>{step});
       const auto m = monitors.values();
       out.put("run/monitors", std::vector<double>(m.begin(), m.end()));
       // Dynamic relaxation, the rest and convergence counters and the
       // stability guard's energy history.
-      out.put("run/energies",
-              std::vector<double>{previous_kinetic_energy,
-                                  initial_potential_energy,
-                                  max_kinetic_energy});
-      out.put("run/counters",
-              std::vector<unsigned int>{rest_steps, converged_steps});
+      out.put("run/energies", relaxation.energy_state());
+      out.put("run/counters", relaxation.counter_state());
       out.put("run/stability_guard", stability_guard.state());
 
       out.put("output/monitor_bytes", double(monitor_file->size()));
-      out.put("output/next_output_time", next_output_time);
+      out.put("output/next_output_time", output_schedule.next_time());
       out.put("output/last_output_step",
-              std::vector<unsigned int>{last_output_step});
+              std::vector<unsigned int>{output_schedule.last_step()});
       out.put("output/next_checkpoint_time",
-              params.checkpoint_interval
-                * (std::floor(time * (1 + 1e-12) / params.checkpoint_interval)
-                   + 1));
-      out.put("output/particle_series", particle_series->times());
-      out.put("output/grid_series", grid_series->times());
-      out.put("output/membrane_series", membrane_series->times());
-      out.put("output/particle_xdmf", particle_xdmf->records());
-      out.put("output/membrane_xdmf", membrane_xdmf->records());
+              checkpoint_schedule.next_time_after(time));
+      const auto series = output->state();
+      out.put("output/particle_series", series.series_times[0]);
+      out.put("output/grid_series", series.series_times[1]);
+      out.put("output/membrane_series", series.series_times[2]);
+      out.put("output/particle_xdmf", series.xdmf_records[0]);
+      out.put("output/membrane_xdmf", series.xdmf_records[1]);
       out.put("cost/wall_seconds", previous_wall_seconds + wall_seconds);
       out.put("cost/stage_seconds", get_stage_seconds());
       out.put("cost/particle_updates", double(particle_updates));
@@ -166,13 +177,13 @@ namespace fsgmpm
   void
   Simulator<dim>::check_checkpoint_parameters(const CheckpointReader &in) const
   {
-    const std::string &file = in.text("fsgmpm/parameters");
+    const std::string file = sorted_lines(in.text("fsgmpm/parameters"));
     AssertThrow(in.scalar("fsgmpm/dim") == dim,
                 ExcMessage("The checkpoint is of a "
                            + std::to_string(int(in.scalar("fsgmpm/dim")))
                            + "D run; this scene is " + std::to_string(dim)
                            + "D."));
-    const std::string here = listing_text(parameter_listing);
+    const std::string here = sorted_lines(listing_text(parameter_listing));
     if (file == here)
       return;
     // Name the parameters that differ.
@@ -210,35 +221,27 @@ namespace fsgmpm
     AssertThrow(in.has("membrane/position") == bool(membrane),
                 ExcMessage("The checkpoint's scene and this one differ in "
                            "having a membrane."));
-    time            = in.scalar("run/time");
-    const auto &dts = in.doubles("run/dt");
-    dt              = dts.at(0);
-    dt_min          = dts.at(1);
-    dt_max          = dts.at(2);
-    step            = in.uints("run/step").at(0);
-    const auto &m   = in.doubles("run/monitors");
+    time = in.scalar("run/time");
+    time_step_control.set_state(in.doubles("run/dt"));
+    step          = in.uints("run/step").at(0);
+    const auto &m = in.doubles("run/monitors");
     AssertThrow(m.size() == Monitors::n_values,
                 ExcMessage("The checkpoint's monitors are damaged."));
     std::array<double, Monitors::n_values> values;
     std::copy(m.begin(), m.end(), values.begin());
     monitors.set_values(values);
-    const auto &e            = in.doubles("run/energies");
-    previous_kinetic_energy  = e.at(0);
-    initial_potential_energy = e.at(1);
-    max_kinetic_energy       = e.at(2);
-    rest_steps               = in.uints("run/counters").at(0);
-    converged_steps          = in.uints("run/counters").at(1);
+    relaxation.set_state(in.doubles("run/energies"), in.uints("run/counters"));
     stability_guard.set_state(in.doubles("run/stability_guard"));
 
     resume_monitor_bytes = in.scalar("output/monitor_bytes");
-    next_output_time     = in.scalar("output/next_output_time");
-    last_output_step     = in.uints("output/last_output_step").at(0);
-    next_checkpoint_time = in.scalar("output/next_checkpoint_time");
-    resume_series_times  = {{in.doubles("output/particle_series"),
-                             in.doubles("output/grid_series"),
-                             in.doubles("output/membrane_series")}};
-    resume_xdmf_records  = {
-       {in.doubles("output/particle_xdmf"), in.doubles("output/membrane_xdmf")}};
+    output_schedule.set_state(in.scalar("output/next_output_time"),
+                              in.uints("output/last_output_step").at(0));
+    checkpoint_schedule.set_state(in.scalar("output/next_checkpoint_time"), 0);
+    resume_output         = {{{in.doubles("output/particle_series"),
+                               in.doubles("output/grid_series"),
+                               in.doubles("output/membrane_series")}},
+                             {{in.doubles("output/particle_xdmf"),
+                               in.doubles("output/membrane_xdmf")}}};
     previous_wall_seconds = in.scalar("cost/wall_seconds");
     // A checkpoint of another version may time other stages: then the
     // cost before the restart is left out of the stage times.
@@ -287,7 +290,7 @@ namespace fsgmpm
           }
         check_checkpoint_parameters(*in);
         load_checkpoint(*in);
-        AssertThrow(time < params.end_time * (1 - 1e-14)
+        AssertThrow(time < params.time_step.end_time * (1 - 1e-14)
                       && (params.max_steps == 0 || step < params.max_steps),
                     ExcMessage("The checkpoint <" + file.string()
                                + "> is at t = " + std::to_string(time)

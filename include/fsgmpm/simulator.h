@@ -6,14 +6,17 @@
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
-#include <fsgmpm/io/particle_output.h>
+#include <fsgmpm/io/run_output.h>
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/monitors/scene_monitors.h>
 #include <fsgmpm/particles/particle_store.h>
+#include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/monitors.h>
+#include <fsgmpm/run/output_schedule.h>
 #include <fsgmpm/run/stability_guard.h>
 #include <fsgmpm/run/termination.h>
+#include <fsgmpm/run/time_step_control.h>
 #include <fsgmpm/scene/body.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/step/material_options.h>
@@ -32,8 +35,13 @@ namespace fsgmpm
   class CheckpointReader;
 
   /**
-   * Owns the grid, the particles, the materials and the output, and runs the
-   * explicit time loop of Stages. The constructor reads and validates the
+   * A scene and its run: owns the grid, the points, the materials, the
+   * membrane (the state), the explicit step that advances them (MpmStep)
+   * and the run control around it, each a piece of its own that a program
+   * can also use alone: TimeStepControl (the step), StabilityGuard,
+   * EnergyBalance and DynamicRelaxation (the energy bookkeeping, Eq. 30,
+   * kinetic damping, rest), OutputSchedule and RunOutput (when and what is
+   * written), the scene monitors. The constructor reads and validates the
    * whole scene and builds everything, but writes nothing; run() creates
    * the output directory and writes as it goes.
    */
@@ -150,7 +158,7 @@ namespace fsgmpm
     double
     get_dt() const
     {
-      return dt;
+      return time_step_control.dt();
     }
     Termination
     get_termination() const
@@ -167,7 +175,7 @@ namespace fsgmpm
     unsigned int
     get_converged_steps() const
     {
-      return converged_steps;
+      return relaxation.converged_steps();
     }
     const Parameters<dim> &
     get_parameters() const
@@ -193,6 +201,17 @@ namespace fsgmpm
     {
       return *mpm_step;
     }
+    /// The run control's pieces.
+    const TimeStepControl &
+    get_time_step_control() const
+    {
+      return time_step_control;
+    }
+    const DynamicRelaxation &
+    get_dynamic_relaxation() const
+    {
+      return relaxation;
+    }
 
   private:
     void
@@ -210,8 +229,6 @@ namespace fsgmpm
     }
     bool
     check_stability(const double displacement_ratio);
-    void
-    write_output();
     void
     write_summary(const double wall_seconds) const;
     /// Write the whole state to Output/Directory/checkpoints (keeps two).
@@ -243,44 +260,34 @@ namespace fsgmpm
     std::vector<Point<2>>     membrane_outline;
     std::pair<double, double> membrane_z_range;
 
-    double       time = 0, dt = 0, dt_min = 0, dt_max = 0;
-    unsigned int step = 0;
-    Monitors     monitors;
-    double       previous_kinetic_energy = 0;
-    /// Potential energy above the mesh's lowest point at the start, and the
-    /// largest kinetic energy so far (Termination = at_rest).
-    double         initial_potential_energy = 0, max_kinetic_energy = 0;
-    unsigned int   rest_steps      = 0;
-    unsigned int   converged_steps = 0;
-    Termination    termination     = Termination::running;
-    std::string    diagnosis;
-    StabilityGuard stability_guard;
+    double            time = 0;
+    unsigned int      step = 0;
+    TimeStepControl   time_step_control;
+    Monitors          monitors;
+    DynamicRelaxation relaxation;
+    Termination       termination = Termination::running;
+    std::string       diagnosis;
+    StabilityGuard    stability_guard;
 
     std::unique_ptr<MpmStep<dim>> mpm_step;
     /// Wall seconds of the run-control stages, and of all stages before a
     /// restart (from the checkpoint).
-    std::vector<double>          run_stage_seconds, restored_stage_seconds;
-    std::unique_ptr<MonitorFile> monitor_file;
-    ParticleOutput<dim>          particle_output;
-    std::unique_ptr<PvdSeries>   particle_series, grid_series, membrane_series;
-    /// Output/Format = hdf5: the points' and the membrane's series.
-    std::unique_ptr<XdmfSeries> particle_xdmf, membrane_xdmf;
-    double                      next_output_time = 0;
-    unsigned int                last_output_step = 0;
-    unsigned long long          particle_updates = 0;
+    std::vector<double>             run_stage_seconds, restored_stage_seconds;
+    std::unique_ptr<MonitorFile>    monitor_file;
+    std::unique_ptr<RunOutput<dim>> output;
+    OutputSchedule                  output_schedule, checkpoint_schedule;
+    unsigned long long              particle_updates = 0;
 
     /// Every parameter ("Section/Name", value), for the checkpoint.
     std::vector<std::pair<std::string, std::string>> parameter_listing;
-    double                                           next_checkpoint_time = 0;
     /// Wall seconds spent writing checkpoints (summary.json).
     double checkpoint_seconds = 0;
     /// Set by restart(): the state came from a checkpoint, with these
     /// bytes of monitors.csv, wall seconds and output series before it.
-    bool                               resumed               = false;
-    double                             resume_monitor_bytes  = 0;
-    double                             previous_wall_seconds = 0;
-    std::array<std::vector<double>, 3> resume_series_times;
-    std::array<std::vector<double>, 2> resume_xdmf_records;
+    bool                           resumed               = false;
+    double                         resume_monitor_bytes  = 0;
+    double                         previous_wall_seconds = 0;
+    typename RunOutput<dim>::State resume_output;
   };
 } // namespace fsgmpm
 

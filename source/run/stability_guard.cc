@@ -6,6 +6,50 @@
 
 namespace fsgmpm
 {
+  void
+  StabilityGuard::Settings::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Stability");
+    {
+      prm.declare_entry("Kinetic energy growth factor",
+                        "10",
+                        Patterns::Double(1),
+                        "Stop as unstable if the kinetic energy grows by "
+                        "more than this factor over the growth window while "
+                        "the external work does not account for it.");
+      prm.declare_entry("Growth window",
+                        "100",
+                        Patterns::Integer(1),
+                        "Steps over which the kinetic energy growth is "
+                        "measured.");
+      prm.declare_entry(
+        "Energy creation tolerance",
+        "0.5",
+        Patterns::Double(0),
+        "Stop as unstable if the kinetic plus strain energy exceeds the "
+        "initial energy plus the external work minus the damping work "
+        "(energy the step created) by more than this fraction of the "
+        "initial energy plus the largest external work so far; catches slow "
+        "growth that the growth window does not. 0 switches it off.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StabilityGuard::Settings::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Stability");
+    growth_factor             = prm.get_double("Kinetic energy growth factor");
+    growth_window             = prm.get_integer("Growth window");
+    energy_creation_tolerance = prm.get_double("Energy creation tolerance");
+    prm.leave_subsection();
+  }
+
+
+
   StabilityGuard::StabilityGuard(const Settings &settings)
     : settings(settings)
   {}

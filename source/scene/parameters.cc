@@ -31,24 +31,10 @@ namespace fsgmpm
                         "2",
                         Patterns::Integer(2, 3),
                         "2 (plane strain, triangles) or 3 (tetrahedra).");
-      prm.declare_entry("End time",
-                        "0.6",
-                        Patterns::Double(0),
-                        "Simulated time at which the run stops (s, > 0).");
       prm.declare_entry("Maximum number of steps",
                         "0",
                         Patterns::Integer(0),
                         "Stop after this many steps (0: no limit).");
-      prm.declare_entry("Courant number",
-                        "0.5",
-                        Patterns::Double(0, 1),
-                        "C in dt = C min h/(c + |v|), 0 < C <= 1.");
-      prm.declare_entry("Fixed time step",
-                        "0",
-                        Patterns::Double(0),
-                        "If > 0, use this time step (s) instead of the "
-                        "automatic one; the run stops as unstable if it "
-                        "exceeds the stability limit by more than 1/C.");
       prm.declare_entry("Update scheme",
                         "MUSL",
                         Patterns::Selection("MUSL|USL"),
@@ -125,23 +111,6 @@ namespace fsgmpm
                         "0",
                         Patterns::Double(0),
                         "Gravity grows linearly from 0 over this time (s).");
-      prm.declare_entry("Termination",
-                        "end_time",
-                        Patterns::Selection("end_time|dr_converged|at_rest"),
-                        "end_time: run to End time; dr_converged: stop "
-                        "earlier when both Eq. (30) ratios stay below their "
-                        "tolerances for the convergence window; at_rest: "
-                        "stop when, after moving, the kinetic energy of the "
-                        "grid motion (monitor grid_kinetic_energy) stays "
-                        "below Rest tolerance times the initial potential "
-                        "energy (above the mesh's lowest point) for "
-                        "Damping/Convergence window steps.");
-      prm.declare_entry("Rest tolerance",
-                        "1e-6",
-                        Patterns::Double(0),
-                        "Termination = at_rest: grid kinetic energy / "
-                        "initial potential energy below which the material "
-                        "is at rest.");
       prm.declare_entry("Number of threads",
                         "0",
                         Patterns::Integer(0, 1024),
@@ -165,50 +134,6 @@ namespace fsgmpm
                         "inertia (no weight, no momentum) so that the "
                         "material points' limit governs; changes the motion "
                         "but not the static state. Quasi-static runs only.");
-      prm.declare_entry("Kinetic damping",
-                        "false",
-                        Patterns::Bool(),
-                        "Zero all velocities at each peak of the kinetic "
-                        "energy.");
-      prm.declare_entry("Energy tolerance",
-                        "0.05",
-                        Patterns::Double(0),
-                        "E_v of Eq. (30): kinetic energy / external work.");
-      prm.declare_entry("Force tolerance",
-                        "0.05",
-                        Patterns::Double(0),
-                        "E_f of Eq. (30): |F_ext - F_int| / |F_ext| over "
-                        "the unconstrained nodal components.");
-      prm.declare_entry("Convergence window",
-                        "1000",
-                        Patterns::Integer(1),
-                        "Consecutive steps both Eq. (30) ratios must stay "
-                        "below their tolerances.");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Stability");
-    {
-      prm.declare_entry("Kinetic energy growth factor",
-                        "10",
-                        Patterns::Double(1),
-                        "Stop as unstable if the kinetic energy grows by "
-                        "more than this factor over the growth window while "
-                        "the external work does not account for it.");
-      prm.declare_entry("Growth window",
-                        "100",
-                        Patterns::Integer(1),
-                        "Steps over which the kinetic energy growth is "
-                        "measured.");
-      prm.declare_entry(
-        "Energy creation tolerance",
-        "0.5",
-        Patterns::Double(0),
-        "Stop as unstable if the kinetic plus strain energy exceeds the "
-        "initial energy plus the external work minus the damping work "
-        "(energy the step created) by more than this fraction of the "
-        "initial energy plus the largest external work so far; catches slow "
-        "growth that the growth window does not. 0 switches it off.");
     }
     prm.leave_subsection();
 
@@ -335,6 +260,10 @@ namespace fsgmpm
     }
     prm.leave_subsection();
 
+    // The run-control pieces declare their own entries.
+    TimeStepControl::Settings::declare_parameters(prm);
+    DynamicRelaxation::Settings::declare_parameters(prm);
+    StabilityGuard::Settings::declare_parameters(prm);
     MovingWallParameters::declare_parameters(prm);
     BodyDescription<dim>::declare_parameters(prm);
     MembraneDescription<dim>::declare_parameters(prm);
@@ -347,10 +276,7 @@ namespace fsgmpm
   Parameters<dim>::Parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Simulation");
-    end_time          = prm.get_double("End time");
     max_steps         = prm.get_integer("Maximum number of steps");
-    courant           = prm.get_double("Courant number");
-    fixed_dt          = prm.get_double("Fixed time step");
     use_musl          = (prm.get("Update scheme") == "MUSL");
     use_apic          = (prm.get("Velocity transfer") != "FLIP");
     apic_affine_remap = (prm.get("Velocity transfer") == "APIC affine remap");
@@ -369,37 +295,21 @@ namespace fsgmpm
                 ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "
                            "(10^4 g) in magnitude; got <"
                            + prm.get("Gravity") + ">."));
-    gravity_ramp_time   = prm.get_double("Gravity ramp time");
-    stop_when_converged = (prm.get("Termination") == "dr_converged");
-    stop_when_at_rest   = (prm.get("Termination") == "at_rest");
-    rest_tolerance      = prm.get_double("Rest tolerance");
-    n_threads           = prm.get_integer("Number of threads");
+    gravity_ramp_time = prm.get_double("Gravity ramp time");
+    n_threads         = prm.get_integer("Number of threads");
     prm.leave_subsection();
-    AssertThrow(end_time > 0,
-                ExcMessage("Simulation/End time must be positive."));
-    AssertThrow(courant > 0 && courant <= 1,
-                ExcMessage("Simulation/Courant number must lie in (0, 1]; "
-                           "got "
-                           + std::to_string(courant) + "."));
+    time_step.parse_parameters(prm);
+    relaxation.parse_parameters(prm);
+    stability.parse_parameters(prm);
 
     prm.enter_subsection("Damping");
-    local_damping      = prm.get_double("Local damping coefficient");
-    kinetic_damping    = prm.get_bool("Kinetic damping");
-    mass_scaling       = prm.get_bool("Mass scaling");
-    energy_tolerance   = prm.get_double("Energy tolerance");
-    force_tolerance    = prm.get_double("Force tolerance");
-    convergence_window = prm.get_integer("Convergence window");
+    local_damping = prm.get_double("Local damping coefficient");
+    mass_scaling  = prm.get_bool("Mass scaling");
     prm.leave_subsection();
     AssertThrow(local_damping >= 0 && local_damping < 1,
                 ExcMessage("Damping/Local damping coefficient must lie in "
                            "[0, 1); got "
                            + std::to_string(local_damping) + "."));
-
-    prm.enter_subsection("Stability");
-    ke_growth_factor          = prm.get_double("Kinetic energy growth factor");
-    ke_growth_window          = prm.get_integer("Growth window");
-    energy_creation_tolerance = prm.get_double("Energy creation tolerance");
-    prm.leave_subsection();
 
     prm.enter_subsection("Grid");
     grid_type           = prm.get("Type");

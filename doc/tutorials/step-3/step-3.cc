@@ -221,7 +221,7 @@ end
           late_ratios.push_back(eq30.dr_force_ratio);
         if (r.converged_at < 0
             && simulator.get_converged_steps()
-                 >= simulator.get_parameters().convergence_window)
+                 >= simulator.get_parameters().relaxation.convergence_window)
           r.converged_at = t;
 
         const bool report = (t >= next_report - 1e-9) || !running;

@@ -1,6 +1,8 @@
 #ifndef fsgmpm_run_stability_guard_h
 #define fsgmpm_run_stability_guard_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <fsgmpm/run/monitors.h>
 
 #include <array>
@@ -29,6 +31,13 @@ namespace fsgmpm
   public:
     struct Settings
     {
+      /// Declare the Stability subsection.
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      /// Read it.
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
       double       energy_creation_tolerance = 0.5; ///< 0: off
       double       growth_factor             = 10;
       unsigned int growth_window             = 100;

@@ -6,6 +6,9 @@
 
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/moving_wall.h>
+#include <fsgmpm/run/dynamic_relaxation.h>
+#include <fsgmpm/run/stability_guard.h>
+#include <fsgmpm/run/time_step_control.h>
 #include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/step/stress_integration.h>
 
@@ -33,12 +36,11 @@ namespace fsgmpm
     explicit Parameters(ParameterHandler &prm);
 
     // Simulation
-    double       end_time;
-    unsigned int max_steps;
-    double       courant;
-    double       fixed_dt;
-    bool         use_musl;
-    bool         use_apic;
+    /// End time, Courant number, fixed time step.
+    TimeStepControl::Settings time_step;
+    unsigned int              max_steps;
+    bool                      use_musl;
+    bool                      use_apic;
     /// Velocity transfer = APIC affine remap: Stages::remap keeps the
     /// grid-updated velocity at filled nodes.
     bool apic_affine_remap;
@@ -52,23 +54,15 @@ namespace fsgmpm
     double         contact_volume_fraction;
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
-    bool           stop_when_converged;
-    bool           stop_when_at_rest;
-    double         rest_tolerance;
     unsigned int   n_threads;
 
-    // Damping and dynamic relaxation (Eq. 30)
-    double       local_damping;
-    bool         kinetic_damping;
-    bool         mass_scaling;
-    double       energy_tolerance;
-    double       force_tolerance;
-    unsigned int convergence_window;
-
-    // Stability guard
-    double       ke_growth_factor;
-    unsigned int ke_growth_window;
-    double       energy_creation_tolerance;
+    // Damping of the step (local, mass scaling)
+    double local_damping;
+    bool   mass_scaling;
+    /// Dynamic relaxation's run control: kinetic damping, Eq. (30), rest,
+    /// Simulation/Termination.
+    DynamicRelaxation::Settings relaxation;
+    StabilityGuard::Settings    stability;
 
     // Grid
     std::string                                 grid_type;

@@ -1,0 +1,61 @@
+#ifndef fsgmpm_run_energy_balance_h
+#define fsgmpm_run_energy_balance_h
+
+#include <deal.II/base/tensor.h>
+
+#include <fsgmpm/grid/nodal_fields.h>
+#include <fsgmpm/materials/material.h>
+#include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/particles/particle_store.h>
+#include <fsgmpm/run/monitors.h>
+#include <fsgmpm/step/stages.h>
+
+#include <memory>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * The energy bookkeeping of a run (the common columns of monitors.csv,
+   * the stability guard's balance and Eq. 30): what the state holds, and
+   * what each step adds to the work done on it.
+   */
+  namespace EnergyBalance
+  {
+
+    /// Kinetic, strain and potential (-m g.x) energy of the points and the
+    /// membrane's nodes into @p monitors. Summed per occupied cell in
+    /// parallel, then in cell order: the result does not depend on the
+    /// number of threads.
+    template <int dim>
+    void
+    compute_energies(const ParticleStore<dim>                     &particles,
+                     const std::vector<std::unique_ptr<Material>> &materials,
+                     const Membrane<dim>                          *membrane,
+                     const Tensor<1, dim>                         &gravity,
+                     Monitors                                     &monitors);
+
+    /// Books a step's external and damping work and its lost points, and
+    /// the dynamic-relaxation ratios of Eq. (30) from the nodal (remapped)
+    /// velocities: E_v = grid kinetic energy / external work, E_f =
+    /// |F_ext - F_int| / |F_ext| over the unconstrained nodal components
+    /// (infinite until there is external work or force).
+    template <int dim>
+    void
+    add_step(const Stages::GridUpdateResult &grid_result,
+             const unsigned int              lost_particles,
+             const NodalFields<dim>         &nodes,
+             Monitors                       &monitors);
+
+    /// Potential energy of the points above @p datum (a point of zero
+    /// height, e.g. the mesh's lowest corner): the scale of the at-rest
+    /// tolerance.
+    template <int dim>
+    double
+    potential_energy_above(const ParticleStore<dim> &particles,
+                           const Tensor<1, dim>     &gravity,
+                           const Point<dim>         &datum);
+  } // namespace EnergyBalance
+} // namespace fsgmpm
+
+#endif

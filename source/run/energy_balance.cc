@@ -1,0 +1,123 @@
+#include <fsgmpm/run/energy_balance.h>
+#include <fsgmpm/step/cell_loops.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace fsgmpm
+{
+  namespace EnergyBalance
+  {
+    template <int dim>
+    void
+    compute_energies(const ParticleStore<dim>                     &particles,
+                     const std::vector<std::unique_ptr<Material>> &materials,
+                     const Membrane<dim>                          *membrane,
+                     const Tensor<1, dim>                         &gravity,
+                     Monitors                                     &monitors)
+    {
+      const auto                        &cells = particles.occupied_cells;
+      std::vector<std::array<double, 3>> partial(cells.size());
+      CellLoops::parallel_range(
+        cells.size(),
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int i = b; i < e; ++i)
+            {
+              const unsigned int c = cells[i];
+              double             k = 0, s = 0, g = 0;
+              for (unsigned int p = particles.cell_begin[c];
+                   p < particles.cell_end[c];
+                   ++p)
+                {
+                  k += 0.5 * particles.mass[p]
+                       * particles.velocity[p].norm_square();
+                  s += particles.volume[p]
+                       * materials[particles.material_id[p]]
+                           ->strain_energy_density(particles.stress[p]);
+                  g -= particles.mass[p] * (gravity * particles.position[p]);
+                }
+              partial[i] = {{k, s, g}};
+            }
+        },
+        16);
+      double ke = 0, se = 0, pe = 0;
+      for (const auto &q : partial)
+        {
+          ke += q[0];
+          se += q[1];
+          pe += q[2];
+        }
+      if (membrane)
+        {
+          ke += membrane->kinetic_energy();
+          se += membrane->strain_energy();
+          for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
+            pe -= membrane->mass[a] * (gravity * membrane->position[a]);
+        }
+      monitors.kinetic_energy   = ke;
+      monitors.strain_energy    = se;
+      monitors.potential_energy = pe;
+    }
+
+
+
+    template <int dim>
+    void
+    add_step(const Stages::GridUpdateResult &grid_result,
+             const unsigned int              lost_particles,
+             const NodalFields<dim>         &nodes,
+             Monitors                       &monitors)
+    {
+      monitors.lost_particles += lost_particles;
+      monitors.external_work += grid_result.external_work_increment;
+      monitors.dissipated_energy += grid_result.damping_work_increment;
+
+      // Eq. (30) from the nodal (remapped) velocities.
+      double nodal_ke = 0;
+      for (const unsigned int i : nodes.active_nodes)
+        nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
+      monitors.grid_kinetic_energy = nodal_ke;
+      monitors.dr_energy_ratio     = (monitors.external_work > 0)
+                                       ? nodal_ke / monitors.external_work
+                                       : std::numeric_limits<double>::infinity();
+      monitors.dr_force_ratio      = (grid_result.external_norm_sq > 0)
+                                       ? std::sqrt(grid_result.unbalanced_norm_sq
+                                              / grid_result.external_norm_sq)
+                                       : std::numeric_limits<double>::infinity();
+    }
+
+
+
+    template <int dim>
+    double
+    potential_energy_above(const ParticleStore<dim> &particles,
+                           const Tensor<1, dim>     &gravity,
+                           const Point<dim>         &datum)
+    {
+      double energy = 0;
+      for (unsigned int p = 0; p < particles.size(); ++p)
+        energy
+          -= particles.mass[p] * (gravity * (particles.position[p] - datum));
+      return energy;
+    }
+
+#define FSGMPM_INSTANTIATE(dim)                                           \
+  template void compute_energies<dim>(                                    \
+    const ParticleStore<dim> &,                                           \
+    const std::vector<std::unique_ptr<Material>> &,                       \
+    const Membrane<dim> *,                                                \
+    const Tensor<1, dim> &,                                               \
+    Monitors &);                                                          \
+  template void   add_step<dim>(const Stages::GridUpdateResult &,         \
+                              const unsigned int,                       \
+                              const NodalFields<dim> &,                 \
+                              Monitors &);                              \
+  template double potential_energy_above<dim>(const ParticleStore<dim> &, \
+                                              const Tensor<1, dim> &,     \
+                                              const Point<dim> &);
+    FSGMPM_INSTANTIATE(2)
+    FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
+  } // namespace EnergyBalance
+} // namespace fsgmpm

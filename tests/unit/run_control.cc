@@ -1,0 +1,245 @@
+// The run-control pieces of a Simulator, each used alone (issue 16):
+// - TimeStepControl: the automatic step is the stages' stable step; a fixed
+//   step is taken when stable and refused, naming the parameter, when not;
+//   the last step lands on the end time exactly; dt_min and dt_max.
+// - OutputSchedule: output at the first step at or past each multiple of
+//   the interval (steps of 0.03 s, interval 0.1 s: after 0.12, 0.21, 0.3
+//   s), never twice in a step; an interval below the round-off of the time
+//   still moves past the time (1e-20 s at t = 1 s: every step is then due);
+//   every N steps without an interval.
+// - DynamicRelaxation: kinetic damping removes all kinetic energy (points,
+//   APIC's affine velocities, membrane nodes excepted here) exactly when it
+//   has passed a peak and books it as dissipated; Eq. (30) convergence
+//   needs both ratios below tolerance for the whole window, after the load
+//   time; at rest needs the grid's kinetic energy below the tolerance after
+//   it was above.
+// - EnergyBalance: kinetic, strain and potential energy of points with
+//   known state against the hand sums (exact to round-off, 1e-14
+//   relative), and the Eq. (30) ratios of a step.
+
+#include <fsgmpm/materials/linear_elastic.h>
+#include <fsgmpm/run/dynamic_relaxation.h>
+#include <fsgmpm/run/energy_balance.h>
+#include <fsgmpm/run/output_schedule.h>
+#include <fsgmpm/run/time_step_control.h>
+#include <gtest/gtest.h>
+
+#include "test_utilities.h"
+
+#include <cmath>
+#include <limits>
+
+using namespace fsgmpm;
+
+TEST(TimeStepControl, AutomaticFixedAndEndTime)
+{
+  TimeStepControl automatic({0.5, 0., 1.});
+  EXPECT_EQ(automatic.choose(0.3, 0., 0), "");
+  EXPECT_EQ(automatic.dt(), 0.3);
+  automatic.record_step(1);
+  EXPECT_EQ(automatic.choose(0.2, 0.3, 1), "");
+  automatic.record_step(2);
+  // Lands on the end time: 1 - 0.9 left.
+  EXPECT_EQ(automatic.choose(0.4, 0.9, 2), "");
+  EXPECT_DOUBLE_EQ(automatic.dt(), 0.1);
+  automatic.record_step(3);
+  EXPECT_DOUBLE_EQ(automatic.dt_min(), 0.1);
+  EXPECT_EQ(automatic.dt_max(), 0.3);
+
+  // A fixed step within the limit dt_stable / Courant (0.6 here).
+  TimeStepControl fixed({0.5, 0.5, 1.});
+  EXPECT_EQ(fixed.choose(0.3, 0., 0), "");
+  EXPECT_EQ(fixed.dt(), 0.5);
+  // Above it: refused, dt unchanged.
+  const std::string problem = fixed.choose(0.2, 0.5, 1);
+  EXPECT_NE(problem.find("Simulation/Fixed time step"), std::string::npos)
+    << problem;
+  EXPECT_EQ(fixed.dt(), 0.5);
+
+  // A non-finite step (a blow-up) is refused.
+  TimeStepControl broken({0.5, 0., 1.});
+  EXPECT_NE(broken.choose(std::numeric_limits<double>::quiet_NaN(), 0., 4), "");
+
+  // The state round trip (checkpoints).
+  TimeStepControl restored({0.5, 0., 1.});
+  restored.set_state(automatic.state());
+  EXPECT_EQ(restored.state(), automatic.state());
+}
+
+
+
+TEST(OutputSchedule, IntervalStepsAndRoundOff)
+{
+  OutputSchedule      schedule(0.1);
+  std::vector<double> written;
+  double              time = 0;
+  for (unsigned int step = 1; step <= 10; ++step)
+    {
+      time += 0.03;
+      if (schedule.due(time, step))
+        {
+          written.push_back(time);
+          schedule.written(time, step);
+          EXPECT_FALSE(schedule.due(time, step));
+        }
+    }
+  ASSERT_EQ(written.size(), 3u);
+  EXPECT_NEAR(written[0], 0.12, 1e-15);
+  EXPECT_NEAR(written[1], 0.21, 1e-15);
+  EXPECT_NEAR(written[2], 0.30, 1e-15);
+  // The final state of a run is written whatever the schedule.
+  EXPECT_TRUE(schedule.due(time + 0.01, 11, true));
+
+  // An interval below the round-off of the time.
+  OutputSchedule tiny(1e-20);
+  tiny.written(1., 1);
+  EXPECT_GT(tiny.next_time(), 1.);
+  // (so every later step is due)
+  EXPECT_TRUE(tiny.due(1. + 1e-9, 2));
+
+  OutputSchedule every(0., 4);
+  EXPECT_TRUE(every.active());
+  EXPECT_FALSE(every.due(1., 3));
+  EXPECT_TRUE(every.due(1., 4));
+  EXPECT_FALSE(OutputSchedule(0., 0).active());
+}
+
+
+
+TEST(DynamicRelaxation, KineticDampingConvergenceAndRest)
+{
+  ParticleStore<2> particles;
+  particles.enable_affine_velocity();
+  particles.add(
+    Point<2>(0.5, 0.5), 0, 2., 1., Tensor<1, 2>({1., 0.}), {}, 0, 0);
+  particles.affine_velocity.back()[0][1] = 3.;
+
+  DynamicRelaxation::Settings settings;
+  settings.kinetic_damping     = true;
+  settings.convergence_window  = 3;
+  settings.load_time           = 0.5;
+  settings.rest_tolerance      = 1e-3;
+  settings.stop_when_converged = true;
+  DynamicRelaxation relaxation(settings);
+  Monitors          m;
+  m.kinetic_energy = 1.;
+  relaxation.reset(m, 100.);
+
+  // Rising kinetic energy: no damping.
+  m.kinetic_energy = 2.;
+  relaxation.apply_kinetic_damping(m,
+                                   particles,
+                                   static_cast<Membrane<2> *>(nullptr));
+  EXPECT_EQ(particles.velocity[0][0], 1.);
+  EXPECT_EQ(m.dissipated_energy, 0.);
+  // Past the peak: everything stops, the energy is booked.
+  m.kinetic_energy = 1.5;
+  relaxation.apply_kinetic_damping(m,
+                                   particles,
+                                   static_cast<Membrane<2> *>(nullptr));
+  EXPECT_EQ(particles.velocity[0].norm(), 0.);
+  EXPECT_EQ(particles.affine_velocity[0].norm(), 0.);
+  EXPECT_EQ(m.dissipated_energy, 1.5);
+  EXPECT_EQ(m.kinetic_energy, 0.);
+
+  // Eq. (30): not before the load time, then the whole window.
+  m.dr_energy_ratio = 0.01;
+  m.dr_force_ratio  = 0.01;
+  EXPECT_EQ(relaxation.update(m, 0.4), Termination::running);
+  EXPECT_EQ(relaxation.converged_steps(), 0u);
+  EXPECT_EQ(relaxation.update(m, 0.6), Termination::running);
+  EXPECT_EQ(relaxation.update(m, 0.7), Termination::running);
+  m.dr_force_ratio = 0.1; // above E_f = 0.05: starts again
+  EXPECT_EQ(relaxation.update(m, 0.8), Termination::running);
+  EXPECT_EQ(relaxation.converged_steps(), 0u);
+  m.dr_force_ratio = 0.01;
+  EXPECT_EQ(relaxation.update(m, 0.9), Termination::running);
+  EXPECT_EQ(relaxation.update(m, 1.0), Termination::running);
+  EXPECT_EQ(relaxation.update(m, 1.1), Termination::dr_converged);
+
+  // At rest: below 1e-3 x 100 J only counts once it has moved.
+  settings.stop_when_converged = false;
+  settings.stop_when_at_rest   = true;
+  DynamicRelaxation rest(settings);
+  rest.reset(m, 100.);
+  m.grid_kinetic_energy = 0.01;
+  for (unsigned int s = 0; s < 5; ++s)
+    EXPECT_EQ(rest.update(m, 1. + s), Termination::running);
+  m.grid_kinetic_energy = 1.;
+  EXPECT_EQ(rest.update(m, 7.), Termination::running);
+  m.grid_kinetic_energy = 0.01;
+  EXPECT_EQ(rest.update(m, 8.), Termination::running);
+  EXPECT_EQ(rest.update(m, 9.), Termination::running);
+  EXPECT_EQ(rest.update(m, 10.), Termination::at_rest);
+
+  // The state round trip (checkpoints).
+  DynamicRelaxation restored(settings);
+  restored.set_state(rest.energy_state(), rest.counter_state());
+  EXPECT_EQ(restored.energy_state(), rest.energy_state());
+  EXPECT_EQ(restored.counter_state(), rest.counter_state());
+}
+
+
+
+TEST(EnergyBalance, EnergiesAndRelaxationRatios)
+{
+  const auto grid = test_tools::make_unit_box_grid<2>(4);
+  std::vector<std::unique_ptr<Material>> materials;
+  materials.push_back(std::make_unique<LinearElastic>(1e6, 0.25, 1000.));
+  ParticleStore<2>      particles;
+  const Tensor<1, 2>    g({0., -9.81});
+  double                ke = 0, pe = 0, se = 0;
+  SymmetricTensor<2, 3> sigma;
+  sigma[0][0]    = -2e3;
+  sigma[1][1]    = -1e3;
+  sigma[0][1]    = 500.;
+  const double E = 1e6, nu = 0.25;
+  const double w
+    = 0.5
+      * ((1 + nu) / E * (sigma * sigma) - nu / E * std::pow(trace(sigma), 2));
+  for (unsigned int n = 0; n < 20; ++n)
+    {
+      const Point<2>     x(0.05 + 0.045 * n, 0.1 + 0.04 * n);
+      const Tensor<1, 2> v({0.1 * n, -0.05 * n});
+      const double       m = 1. + 0.1 * n, V = 1e-3 * (1 + n % 3);
+      particles.add(
+        x, grid->find_cell_brute_force(x, 1e-12), m, V, v, sigma, 0, 0);
+      ke += 0.5 * m * v.norm_square();
+      pe -= m * (g * x);
+      se += V * w;
+    }
+  particles.sort_by_cell(grid->n_cells());
+  Monitors monitors;
+  EnergyBalance::compute_energies<2>(
+    particles, materials, nullptr, g, monitors);
+  EXPECT_NEAR(monitors.kinetic_energy, ke, 1e-14 * ke);
+  EXPECT_NEAR(monitors.potential_energy, pe, 1e-14 * pe);
+  EXPECT_NEAR(monitors.strain_energy, se, 1e-14 * se);
+  EXPECT_NEAR(EnergyBalance::potential_energy_above(particles, g, Point<2>()),
+              pe,
+              1e-14 * pe);
+
+  // A step's work and the Eq. (30) ratios from the nodal velocities.
+  NodalFields<2> nodes;
+  nodes.resize(grid->n_nodes());
+  nodes.activate(grid->cell_nodes[0]);
+  double nodal_ke = 0;
+  for (const unsigned int i : nodes.active_nodes)
+    {
+      nodes.mass[i]     = 2.;
+      nodes.velocity[i] = Tensor<1, 2>({0.3, 0.4});
+      nodal_ke += 0.5 * 2. * 0.25;
+    }
+  Stages::GridUpdateResult step;
+  step.external_work_increment = 4.;
+  step.damping_work_increment  = 1.;
+  step.unbalanced_norm_sq      = 1.;
+  step.external_norm_sq        = 100.;
+  EnergyBalance::add_step<2>(step, 2, nodes, monitors);
+  EXPECT_EQ(monitors.external_work, 4.);
+  EXPECT_EQ(monitors.dissipated_energy, 1.);
+  EXPECT_EQ(monitors.lost_particles, 2u);
+  EXPECT_DOUBLE_EQ(monitors.grid_kinetic_energy, nodal_ke);
+  EXPECT_DOUBLE_EQ(monitors.dr_energy_ratio, nodal_ke / 4.);
+  EXPECT_DOUBLE_EQ(monitors.dr_force_ratio, 0.1);
+}
