@@ -2,6 +2,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/fe/mapping_fe.h>
 
 #include <fsgmpm/membrane/membrane_fe.h>
 #include <fsgmpm/membrane/membrane_mechanics.h>
@@ -31,7 +32,6 @@ namespace fsgmpm
                               const double                       EA,
                               const double                       nu)
     : fe(checked_degree(degree))
-    , mapping(FE_SimplexP<dim - 1, dim>(1))
     // Degree 1 has a constant strain per cell: its one-point rule is exact
     // for the forces, and HRZ lumping gives the exact mass L/2 or A/3 per
     // vertex by symmetry with any symmetric rule. Degree 2 keeps
@@ -52,7 +52,10 @@ namespace fsgmpm
     // The rest geometry is the triangulation's (straight-sided cells); the
     // support points of degree 2 are the edge midpoints.
     rest_points.resize(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, rest_points);
+    DoFTools::map_dofs_to_support_points(MappingFE<dim - 1, dim>(
+                                           FE_SimplexP<dim - 1, dim>(1)),
+                                         dof_handler,
+                                         rest_points);
 
     n_q_points = quadrature.size();
     cell_dofs.resize(triangulation.n_active_cells() * fe.n_dofs_per_cell());

@@ -8,7 +8,6 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_simplex_p.h>
-#include <deal.II/fe/mapping_fe.h>
 
 #include <deal.II/grid/tria.h>
 
@@ -116,7 +115,6 @@ namespace fsgmpm
   private:
     Triangulation<dim - 1, dim> triangulation;
     FE_SimplexP<dim - 1, dim>   fe;
-    MappingFE<dim - 1, dim>     mapping;
     Quadrature<dim - 1>         quadrature;
     DoFHandler<dim - 1, dim>    dof_handler;
     std::vector<Point<dim>>     rest_points;
