@@ -186,7 +186,7 @@ namespace fsgmpm
     particles.sort_by_cell(grid->n_cells());
     Stages::p2g(*grid, particles, nodes, params.stress_integration);
     if (membrane)
-      Stages::membrane_p2g(*grid, *membrane, nodes);
+      mpm_step->get_membrane_coupling()->p2g(nodes);
     set_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles));
     compute_monitors();
@@ -269,8 +269,8 @@ namespace fsgmpm
                            "ring of nodes at each z level)."));
     if (std::isfinite(description.ground_level))
       {
-        membrane->ground_level     = description.ground_level;
-        membrane->ground_stiffness = description.ground_stiffness;
+        membrane->ground.level     = description.ground_level;
+        membrane->ground.stiffness = description.ground_stiffness;
         membrane->compute_forces();
       }
     AssertThrow(dim == 3 || membrane->is_closed_loop(),

@@ -138,7 +138,10 @@ namespace fsgmpm
 
       StateCheckpoint::save(out, particles);
       if (membrane)
-        StateCheckpoint::save(out, *membrane);
+        {
+          StateCheckpoint::save(out, *membrane);
+          StateCheckpoint::save(out, *mpm_step->get_membrane_coupling());
+        }
       file_name = out.commit();
     }
     // Read it back before older ones go: HDF5 may report a failed write
@@ -252,12 +255,15 @@ namespace fsgmpm
 
     StateCheckpoint::load(in, particles, grid->n_cells());
     if (membrane)
-      StateCheckpoint::load(in, *membrane);
+      {
+        StateCheckpoint::load(in, *membrane);
+        StateCheckpoint::load(in, *mpm_step->get_membrane_coupling());
+      }
     // The nodal fields of the first step after the restart are rebuilt
     // from the points, as every step rebuilds them.
     Stages::p2g(*grid, particles, nodes, params.stress_integration);
     if (membrane)
-      Stages::membrane_p2g(*grid, *membrane, nodes);
+      mpm_step->get_membrane_coupling()->p2g(nodes);
   }
 
 

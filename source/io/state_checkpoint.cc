@@ -83,7 +83,6 @@ namespace fsgmpm
       out.put_tensors("membrane/force", m.force);
       out.put("membrane/cell", m.cell);
       out.put("membrane/tangential_slip", double(m.tangential_slip));
-      out.put_tensors("membrane/weights", m.weights);
       std::vector<unsigned int> ring_sizes, ring_nodes;
       std::vector<double>       ring_rest_length;
       for (unsigned int r = 0; r < m.rings.size(); ++r)
@@ -145,7 +144,7 @@ namespace fsgmpm
       m.force           = in.tensors<Tensor<1, dim>>("membrane/force");
       m.cell            = in.uints("membrane/cell");
       m.tangential_slip = in.scalar("membrane/tangential_slip") != 0;
-      m.weights = in.tensors<std::array<double, dim + 1>>("membrane/weights");
+
       const unsigned int n = m.position.size();
       AssertThrow(m.velocity.size() == n && m.mass.size() == n
                     && m.force.size() == n && m.cell.size() == n,
@@ -243,21 +242,36 @@ namespace fsgmpm
 
 
 
-    template void
-    save(CheckpointWriter &, const ParticleStore<2> &);
-    template void
-    save(CheckpointWriter &, const ParticleStore<3> &);
-    template void
-    load(const CheckpointReader &, ParticleStore<2> &, const unsigned int);
-    template void
-    load(const CheckpointReader &, ParticleStore<3> &, const unsigned int);
-    template void
-    save(CheckpointWriter &, const Membrane<2> &);
-    template void
-    save(CheckpointWriter &, const Membrane<3> &);
-    template void
-    load(const CheckpointReader &, Membrane<2> &);
-    template void
-    load(const CheckpointReader &, Membrane<3> &);
+    template <int dim>
+    void
+    save(CheckpointWriter &out, const MembraneCoupling<dim> &coupling)
+    {
+      out.put_tensors("membrane/weights", coupling.get_weights());
+    }
+
+
+
+    template <int dim>
+    void
+    load(const CheckpointReader &in, MembraneCoupling<dim> &coupling)
+    {
+      coupling.set_weights(
+        in.tensors<std::array<double, dim + 1>>("membrane/weights"));
+    }
+
+
+
+#define FSGMPM_INSTANTIATE(dim)                                          \
+  template void save(CheckpointWriter &, const ParticleStore<dim> &);    \
+  template void load(const CheckpointReader &,                           \
+                     ParticleStore<dim> &,                               \
+                     const unsigned int);                                \
+  template void save(CheckpointWriter &, const Membrane<dim> &);         \
+  template void load(const CheckpointReader &, Membrane<dim> &);         \
+  template void save(CheckpointWriter &, const MembraneCoupling<dim> &); \
+  template void load(const CheckpointReader &, MembraneCoupling<dim> &);
+    FSGMPM_INSTANTIATE(2)
+    FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
   } // namespace StateCheckpoint
 } // namespace fsgmpm

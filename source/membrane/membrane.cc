@@ -3,6 +3,8 @@
 #include <deal.II/grid/tria.h>
 
 #include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/membrane/membrane_geometry.h>
+#include <fsgmpm/membrane/membrane_slip.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,40 +13,6 @@
 
 namespace fsgmpm
 {
-  namespace
-  {
-    // Point at fraction t of the arc from @p from to @p to on the circle
-    // through a, b, c in x-y (z is kept); the chord where the three points
-    // are (nearly) collinear.
-    template <int dim>
-    Point<dim>
-    point_on_arc(const Point<dim> &a,
-                 const Point<dim> &b,
-                 const Point<dim> &c,
-                 const Point<dim> &from,
-                 const Point<dim> &to,
-                 const double      t)
-    {
-      const Tensor<1, dim> ab = b - a, ac = c - a;
-      const double         d = 2 * (ab[0] * ac[1] - ab[1] * ac[0]);
-      if (std::abs(d) <= 1e-12 * (ab.norm_square() + ac.norm_square()))
-        return Point<dim>(from + t * (to - from));
-      Point<dim> o;
-      o[0] = a[0] + (ac[1] * ab.norm_square() - ab[1] * ac.norm_square()) / d;
-      o[1] = a[1] + (ab[0] * ac.norm_square() - ac[0] * ab.norm_square()) / d;
-      const double r  = std::hypot(from[0] - o[0], from[1] - o[1]);
-      const double t1 = std::atan2(from[1] - o[1], from[0] - o[0]);
-      double       dt = std::atan2(to[1] - o[1], to[0] - o[0]) - t1;
-      dt              = std::remainder(dt, 2 * M_PI); // the short arc
-      Point<dim> x    = from;
-      x[0]            = o[0] + r * std::cos(t1 + t * dt);
-      x[1]            = o[1] + r * std::sin(t1 + t * dt);
-      return x;
-    }
-  } // namespace
-
-
-
   template <int dim>
   Membrane<dim>::Membrane(const Triangulation<dim - 1, dim> &mesh,
                           const MembraneProperties          &props,
@@ -129,8 +97,9 @@ namespace fsgmpm
                 ExcMessage("The membrane mesh has no elements."));
     // Degree 2 in 2D: the middle nodes on the smooth curve through the
     // vertices (the arcs through each cell's neighbours, averaged, as
-    // equalize_stretch() places nodes), so that a curved membrane is curved
-    // at rest and not strained by (kappa h)^2/24 when it keeps its shape.
+    // MembraneSlip::equalize_stretch() places nodes), so that a curved membrane
+    // is curved at rest and not strained by (kappa h)^2/24 when it keeps its
+    // shape.
     if (dim == 2 && props.element_degree == 2 && edge_middle_points.empty())
       {
         const unsigned int        invalid = static_cast<unsigned int>(-1);
@@ -150,7 +119,7 @@ namespace fsgmpm
             unsigned int       n_arcs = 0;
             if (cell_ending_at[v0] != invalid)
               {
-                sum += point_on_arc(
+                sum += MembraneGeometry::point_on_arc(
                   position[vertex_node[fe_cells[cell_ending_at[v0]][0]]],
                   x0,
                   x1,
@@ -161,7 +130,7 @@ namespace fsgmpm
               }
             if (cell_starting_at[v1] != invalid)
               {
-                sum += point_on_arc(
+                sum += MembraneGeometry::point_on_arc(
                   x0,
                   x1,
                   position
@@ -391,13 +360,8 @@ namespace fsgmpm
         tension[e]         = stress[0];
         minor_tension[e]   = stress[1];
       }
-    // Ground contact: a normal penalty force on the nodes below the ground
-    // (frictionless: no tangential force).
-    if (std::isfinite(ground_level))
-      for (unsigned int a = 0; a < n_nodes(); ++a)
-        if (position[a][1] < ground_level)
-          force[a][1]
-            += node_ground_stiffness(a) * (ground_level - position[a][1]);
+    // Ground contact (frictionless: a normal penalty force only).
+    ground.add_forces(*this, force);
   }
 
 
@@ -543,115 +507,6 @@ namespace fsgmpm
 
   template <int dim>
   double
-  Membrane<dim>::equalize_stretch()
-  {
-    if constexpr (dim == 2)
-      {
-        if (!is_closed_loop())
-          return 0;
-        return equalize_loop(loop_nodes(), rest_size);
-      }
-    else
-      {
-        // Extruded membrane in a slab with roller faces (plane strain):
-        // the nodes stacked along z share their x-y position (the grid's
-        // tetrahedra move the front and back faces slightly differently,
-        // which the membrane's shear stiffness would turn into large
-        // forces), and the rings are equalized as the 2D loop.
-        if (rings.empty())
-          return 0;
-        const std::vector<Point<dim>> old_position = position;
-        const unsigned int            n            = rings[0].size();
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            double x = 0, y = 0;
-            for (const auto &ring : rings)
-              {
-                x += position[ring[k]][0] / rings.size();
-                y += position[ring[k]][1] / rings.size();
-              }
-            position[rings[0][k]][0] = x;
-            position[rings[0][k]][1] = y;
-          }
-        equalize_loop(rings[0], ring_rest_length[0]);
-        double max_move = 0;
-        for (const auto &ring : rings)
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              position[ring[k]][0] = position[rings[0][k]][0];
-              position[ring[k]][1] = position[rings[0][k]][1];
-              max_move
-                = std::max(max_move,
-                           position[ring[k]].distance(old_position[ring[k]]));
-            }
-        return max_move;
-      }
-  }
-
-
-
-  template <int dim>
-  double
-  Membrane<dim>::equalize_loop(const std::vector<unsigned int> &node,
-                               const std::vector<double>       &rest_length)
-  {
-    const unsigned int  n = node.size();
-    std::vector<double> s(n + 1, 0.), S(n + 1, 0.);
-    for (unsigned int e = 0; e < n; ++e)
-      {
-        // In x-y: a 3D ring is equalized in its plane.
-        const Point<dim> &a = position[node[e]];
-        const Point<dim> &b = position[node[(e + 1) % n]];
-        s[e + 1]            = s[e] + std::hypot(b[0] - a[0], b[1] - a[1]);
-        S[e + 1]            = S[e] + rest_length[e];
-      }
-    const double length = s[n], rest = S[n];
-    // Target arc length of node k: proportional to the rest length before
-    // it, shifted so that the mean shift is zero (no drift along the loop).
-    double shift = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      shift += s[k] - S[k] * length / rest;
-    shift /= n;
-
-    // Point at fraction t of the arc from node e to node e+1, on the
-    // circle through (e-1, e, e+1) and on the one through (e, e+1, e+2),
-    // averaged: exact on circular pieces, so the enclosed area is kept.
-    auto curve = [&](const unsigned int e, const double t) {
-      const Point<dim> &p0 = position[node[(e + n - 1) % n]],
-                       &p1 = position[node[e]],
-                       &p2 = position[node[(e + 1) % n]],
-                       &p3 = position[node[(e + 2) % n]];
-      const Point<dim> x   = point_on_arc(p0, p1, p2, p1, p2, t);
-      const Point<dim> y   = point_on_arc(p1, p2, p3, p1, p2, t);
-      return Point<dim>(0.5 * (x + y));
-    };
-
-    std::vector<Point<dim>> moved(n);
-    double                  max_move = 0;
-    unsigned int            e        = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        double target = S[k] * length / rest + shift;
-        target        = std::fmod(target + length, length);
-        // Find the chord holding the target arc length (monotone in k up
-        // to the wrap-around).
-        unsigned int tries = 0;
-        while (!(s[e] <= target && target <= s[e + 1]) && tries++ <= n)
-          e = (e + 1) % n;
-        const double t
-          = (s[e + 1] > s[e]) ? (target - s[e]) / (s[e + 1] - s[e]) : 0.;
-        moved[k] = curve(e, t);
-        max_move = std::max(max_move, moved[k].distance(position[node[k]]));
-      }
-    for (unsigned int k = 0; k < n; ++k)
-      position[node[k]] = moved[k];
-    return max_move;
-  }
-
-
-
-  template <int dim>
-  double
   Membrane<dim>::element_size(const unsigned int e) const
   {
     const auto &el = elements[e];
@@ -680,42 +535,24 @@ namespace fsgmpm
 
 
   template <int dim>
-  double
-  Membrane<dim>::node_ground_stiffness(const unsigned int a) const
-  {
-    // 2D: per metre of depth. 3D: the same per metre of the node's width,
-    // the square root of its share of the rest area (mass / areal mass), so
-    // that the penetration, about the bottom pressure times the element
-    // size over k, and the ground's time-step bound sqrt(m/k) are those of
-    // 2D at the same element size.
-    return dim == 2
-             ? ground_stiffness
-             : ground_stiffness * std::sqrt(mass[a] / properties.areal_mass);
-  }
-
-
-
-  template <int dim>
   std::vector<SymmetricTensor<2, dim>>
   Membrane<dim>::nodal_stiffness() const
   {
     std::vector<SymmetricTensor<2, dim>> k(n_nodes());
     const double                         EA = properties.axial_stiffness;
-    // With the frictionless slip, equalize_stretch() spreads every local
-    // stretch over the whole loop after each position update, so the grid
-    // feels the cables' axial stiffness only through the loop's length L:
-    // dT = EA dL / L with dL = sum_b theta_b n_b . dx_b (theta_b: turning
+    // With the frictionless slip, MembraneSlip::equalize_stretch() spreads
+    // every local stretch over the whole loop after each position update, so
+    // the grid feels the cables' axial stiffness only through the loop's length
+    // L: dT = EA dL / L with dL = sum_b theta_b n_b . dx_b (theta_b: turning
     // angle at node b), a rank-one stiffness (EA/L) theta_a theta_b n_a n_b
     // whose rows are bounded by (EA/L) |theta_a| sum_b |theta_b|. Bounding
     // the mass scaling by EA/l instead would give the grid nodes next to
     // the membrane ~100x the fluid's inertia along it and slow the
     // relaxation of the shape (doc/membrane_validation.md).
-    const bool slip
-      = tangential_slip
-        && ((dim == 2 && is_closed_loop()) || (dim == 3 && !rings.empty()));
+    const bool          slip = tangential_slip && MembraneSlip::applies(*this);
     std::vector<double> loop_stiffness;
     if (slip)
-      loop_stiffness = loop_axial_stiffness();
+      loop_stiffness = MembraneSlip::loop_axial_stiffness(*this);
     // Degree 2: the elements are the cells' halves (quarters in 3D), whose
     // straight-element bounds below the quadratic cell exceeds; the row
     // sums of the P2 stiffness are 4/3 of those of its linear sub-elements
@@ -792,81 +629,8 @@ namespace fsgmpm
     if (slip)
       for (unsigned int a = 0; a < n_nodes(); ++a)
         k[a] += loop_stiffness[a] * unit_symmetric_tensor<dim>();
-    // The ground's penalty on every node, also far above the ground: a
-    // bound that let the time step grow while the membrane is away from it
-    // made the 2D ellipse scene's energy grow (doc/geocontainer_validation.md,
-    // section 8).
-    if (std::isfinite(ground_level))
-      for (unsigned int a = 0; a < n_nodes(); ++a)
-        k[a][1][1] += node_ground_stiffness(a);
+    ground.add_stiffness(*this, k);
     return k;
-  }
-
-
-
-  template <int dim>
-  std::vector<double>
-  Membrane<dim>::loop_axial_stiffness() const
-  {
-    // Per loop node k: (EA/L) max(|theta_k|, 2 pi l_k/L) sum_j |theta_j|,
-    // with l_k the mean length of the two edges at k; the floor keeps the
-    // bound of a circle (theta = 2 pi l/L) on straight pieces, where the
-    // one pass of equalize_stretch() leaves some local stiffness. 3D: the
-    // first ring's value times each node's share of the height.
-    const std::vector<unsigned int> loop = loop_nodes();
-    const unsigned int              n    = loop.size();
-    std::vector<double>             theta(n), l(n);
-    std::vector<Tensor<1, dim>>     t(n);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        t[k] = position[loop[(k + 1) % n]] - position[loop[k]];
-        l[k] = t[k].norm();
-        if (l[k] > 0)
-          t[k] /= l[k];
-      }
-    double sum = 0, length = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const unsigned int p = (k + n - 1) % n;
-        // A zero-length edge (coincident nodes) adds no turning.
-        theta[k] = (l[p] > 0 && l[k] > 0)
-                     ? std::acos(std::clamp(t[p] * t[k], -1., 1.))
-                     : 0.;
-        sum += theta[k];
-        length += l[k];
-      }
-    AssertThrow(length > 0,
-                ExcMessage("The membrane loop has zero length (all its nodes "
-                           "coincide)."));
-    const double        EA = properties.axial_stiffness;
-    std::vector<double> value(n);
-    for (unsigned int k = 0; k < n; ++k)
-      value[k]
-        = EA / length * sum
-          * std::max(theta[k], M_PI * (l[k] + l[(k + n - 1) % n]) / length);
-
-    std::vector<double> k_node(n_nodes(), 0.);
-    if constexpr (dim == 2)
-      for (unsigned int k = 0; k < n; ++k)
-        k_node[loop[k]] = value[k];
-    else
-      {
-        // Each ring's share of the height: half the distance between its
-        // neighbouring rings (find_rings() requires at least two).
-        const unsigned int n_rings = rings.size();
-        auto               z       = [&](const unsigned int r) {
-          return position[rings[r][0]][dim - 1];
-        };
-        for (unsigned int r = 0; r < n_rings; ++r)
-          {
-            const double share = 0.5
-                                 * std::abs(z(std::min(r + 1, n_rings - 1))
-                                            - z(r > 0 ? r - 1 : 0));
-            for (unsigned int k = 0; k < n; ++k)
-              k_node[rings[r][k]] = share * value[k];
-          }
-      }
-    return k_node;
   }
 
 

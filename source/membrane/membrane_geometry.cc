@@ -125,6 +125,45 @@ namespace fsgmpm
         }
       return area;
     }
+
+
+
+    template <int dim>
+    Point<dim>
+    point_on_arc(const Point<dim> &a,
+                 const Point<dim> &b,
+                 const Point<dim> &c,
+                 const Point<dim> &from,
+                 const Point<dim> &to,
+                 const double      t)
+    {
+      const Tensor<1, dim> ab = b - a, ac = c - a;
+      const double         d = 2 * (ab[0] * ac[1] - ab[1] * ac[0]);
+      if (std::abs(d) <= 1e-12 * (ab.norm_square() + ac.norm_square()))
+        return Point<dim>(from + t * (to - from));
+      Point<dim> o;
+      o[0] = a[0] + (ac[1] * ab.norm_square() - ab[1] * ac.norm_square()) / d;
+      o[1] = a[1] + (ab[0] * ac.norm_square() - ac[0] * ab.norm_square()) / d;
+      const double r  = std::hypot(from[0] - o[0], from[1] - o[1]);
+      const double t1 = std::atan2(from[1] - o[1], from[0] - o[0]);
+      double       dt = std::atan2(to[1] - o[1], to[0] - o[0]) - t1;
+      dt              = std::remainder(dt, 2 * M_PI); // the short arc
+      Point<dim> x    = from;
+      x[0]            = o[0] + r * std::cos(t1 + t * dt);
+      x[1]            = o[1] + r * std::sin(t1 + t * dt);
+      return x;
+    }
+
+#define FSGMPM_INSTANTIATE(dim)                             \
+  template Point<dim> point_on_arc<dim>(const Point<dim> &, \
+                                        const Point<dim> &, \
+                                        const Point<dim> &, \
+                                        const Point<dim> &, \
+                                        const Point<dim> &, \
+                                        const double);
+    FSGMPM_INSTANTIATE(2)
+    FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
   } // namespace MembraneGeometry
 
 

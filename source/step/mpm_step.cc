@@ -30,8 +30,8 @@ namespace fsgmpm
   void
   MpmStep<dim>::attach_membrane(Membrane<dim> &m, const double split_length)
   {
-    membrane              = &m;
-    membrane_split_length = split_length;
+    membrane_coupling
+      = std::make_unique<MembraneCoupling<dim>>(grid, m, split_length);
   }
 
 
@@ -82,10 +82,10 @@ namespace fsgmpm
       TimerOutput::Scope scope(timer, "p2g");
       Stages::p2g(grid, particles, nodes, settings.stress_integration);
     }
-    if (membrane)
+    if (membrane_coupling)
       {
         TimerOutput::Scope scope(timer, "membrane");
-        Stages::membrane_p2g(grid, *membrane, nodes);
+        membrane_coupling->p2g(nodes);
       }
     TimerOutput::Scope scope(timer, "p2g");
     Stages::contact_normals(grid, particles, nodes);
@@ -104,9 +104,10 @@ namespace fsgmpm
                                     particles,
                                     materials,
                                     settings.courant,
-                                    membrane ? &cell_stiffness : nullptr);
+                                    membrane_coupling ? &cell_stiffness
+                                                      : nullptr);
     }
-    if (membrane)
+    if (membrane_coupling)
       {
         TimerOutput::Scope scope(timer, "membrane");
         // The nodes the membrane touches: the nodal bound with the
@@ -114,14 +115,12 @@ namespace fsgmpm
         // share there, so the smaller of the two bounds governs).
         const double dt_m
           = settings.courant
-            * Stages::membrane_time_step(grid,
-                                         *membrane,
-                                         cell_stiffness,
-                                         particles.occupied_cells,
-                                         nodes,
-                                         settings.mass_scaling
-                                           ? dt / settings.courant
-                                           : 0.);
+            * membrane_coupling->time_step(cell_stiffness,
+                                           particles.occupied_cells,
+                                           nodes,
+                                           settings.mass_scaling
+                                             ? dt / settings.courant
+                                             : 0.);
         dt = std::min(dt, dt_m);
       }
     // Local damping -alpha |F| sign(v) stiffens every node by up to
@@ -163,10 +162,10 @@ namespace fsgmpm
       Stages::g2p(
         grid, nodes, dt, particles, tau > 0 ? -std::expm1(-dt / tau) : 0.);
     }
-    if (membrane)
+    if (membrane_coupling)
       {
         TimerOutput::Scope scope(timer, "membrane");
-        Stages::membrane_g2p(grid, nodes, *membrane);
+        membrane_coupling->g2p(nodes);
       }
     if (settings.use_musl)
       {
@@ -176,7 +175,7 @@ namespace fsgmpm
                       particles,
                       constraints,
                       nodes,
-                      membrane,
+                      membrane_coupling.get(),
                       settings.apic_affine_remap);
         Stages::field_contact(grid,
                               constraints,
@@ -224,12 +223,12 @@ namespace fsgmpm
       result.displacement_ratio
         = Stages::update_positions(grid, nodes, dt, particles);
     }
-    if (membrane)
+    if (membrane_coupling)
       {
         TimerOutput::Scope scope(timer, "membrane");
         result.displacement_ratio
           = std::max(result.displacement_ratio,
-                     Stages::membrane_positions(grid, nodes, dt, *membrane));
+                     membrane_coupling->update_positions(nodes, dt));
       }
     // After a blow-up the positions are not finite and cannot be located;
     // run control stops the run on the ratio.
@@ -240,13 +239,10 @@ namespace fsgmpm
           result.lost_particles = Stages::relocate(grid, particles);
         }
         // The membrane's slip, splits, location and element forces.
-        if (membrane)
+        if (membrane_coupling)
           {
             TimerOutput::Scope scope(timer, "membrane");
-            result.membrane_nodes_outside
-              = Stages::membrane_relocate(grid,
-                                          membrane_split_length,
-                                          *membrane);
+            result.membrane_nodes_outside = membrane_coupling->relocate();
           }
       }
     return result;

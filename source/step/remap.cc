@@ -14,7 +14,7 @@ namespace fsgmpm
           const ParticleStore<dim>    &particles,
           const NodalConstraints<dim> &constraints,
           NodalFields<dim>            &nodes,
-          const Membrane<dim>         *membrane,
+          const MembraneCoupling<dim> *membrane,
           const bool                   affine)
     {
       // APIC's affine term in Eq. (20), sum_p N_i m_p (v_p + C_p (x_i -
@@ -64,7 +64,7 @@ namespace fsgmpm
       });
 
       if (membrane != nullptr)
-        membrane_remap(grid, *membrane, nodes);
+        membrane->remap(nodes);
 
       // Eq. (20) with the lumped mass matrix. Walls act kinematically only:
       // the friction impulse was applied once, in the grid update.
@@ -88,14 +88,14 @@ namespace fsgmpm
              const ParticleStore<2> &,
              const NodalConstraints<2> &,
              NodalFields<2> &,
-             const Membrane<2> *,
+             const MembraneCoupling<2> *,
              bool);
     template void
     remap<3>(const BackgroundGrid<3> &,
              const ParticleStore<3> &,
              const NodalConstraints<3> &,
              NodalFields<3> &,
-             const Membrane<3> *,
+             const MembraneCoupling<3> *,
              bool);
   } // namespace Stages
 } // namespace fsgmpm

@@ -1,4 +1,4 @@
-// Membrane state operations (issue 5), no grid:
+// Membrane state operations (issue 5), no grid but in (7):
 // (1) splitting: a closed loop stretched beyond the split length is split
 //     until every cable is short enough, with the total mass, the total rest
 //     length and the tension of every piece unchanged (the strain of a piece
@@ -21,13 +21,20 @@
 //     with slip the cables' axial part is replaced by the loop's bound;
 // (5) 3D slip on the rings of an extruded membrane (see below);
 // (6) 3D no-slip: the triangles' nodal stiffness bounds the explicit time
-//     step safely and not far below the exact limit (see below).
+//     step safely and not far below the exact limit (see below);
+// (7) the coupling's time-step bound keeps its stiffness sums to itself:
+//     it writes only the fictitious inertia to NodalFields::added_mass and
+//     never reads it (see below).
 
 #include <deal.II/grid/tria.h>
 
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/membrane/membrane_mechanics.h>
+#include <fsgmpm/membrane/membrane_slip.h>
+#include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/step/membrane_coupling.h>
 #include <gtest/gtest.h>
+#include <test_utilities.h>
 
 #include <cmath>
 #include <cstdio>
@@ -131,7 +138,7 @@ TEST(MembraneState, SlipEqualizesStretchAndKeepsTheCurve)
   double moved = 0;
   for (unsigned int pass = 0; pass < 3; ++pass)
     {
-      moved = std::max(moved, m.equalize_stretch());
+      moved = std::max(moved, MembraneSlip::equalize_stretch(m));
       m.compute_forces();
       std::printf("measured pass %u: tension spread %.3e N/m\n",
                   pass,
@@ -255,8 +262,8 @@ TEST(MembraneState, DirectionalNodalStiffness)
       }
   }
 
-  m.ground_level     = -r;
-  m.ground_stiffness = 1e7;
+  m.ground.level     = -r;
+  m.ground.stiffness = 1e7;
   const auto kg      = m.nodal_stiffness();
   for (unsigned int a = 0; a < n; ++a)
     {
@@ -329,7 +336,7 @@ TEST(MembraneState, SlipOnExtrudedMembraneRings)
   const double spread0 = spread();
   for (unsigned int pass = 0; pass < 3; ++pass)
     {
-      m.equalize_stretch();
+      MembraneSlip::equalize_stretch(m);
       m.compute_forces();
     }
   std::printf("measured 3D rings: triangle tension spread %.1f -> %.2e N/m "
@@ -380,7 +387,7 @@ TEST(MembraneState, SlipOnExtrudedMembraneRings)
 
 
 // The time-step bound of a 3D membrane, 2 sqrt(m_a / (c0 k_a)) per node
-// (Stages::membrane_time_step, c0 = 2.5 / (1 - nu^2), k_a the largest
+// (MembraneCoupling::time_step, c0 = 2.5 / (1 - nu^2), k_a the largest
 // eigenvalue of Membrane::nodal_stiffness), against the exact explicit limit
 // 2 / sqrt(lambda_max(M^-1 K)) of a tilted sheet of 5 x 4 nodes (1.1 x 1 cm
 // spacing, like the geocontainer's 3D membrane), stretched 1% in both
@@ -498,8 +505,8 @@ TEST(MembraneState, TriangleStiffnessBoundsTheTimeStep)
       EXPECT_GE(dt_bound, 0.4 * dt_exact);
 
       // The ground: k times the node's width in 3D, on every node.
-      m.ground_level     = base[0][1] + 0.5 * hy;
-      m.ground_stiffness = 1e7;
+      m.ground.level     = base[0][1] + 0.5 * hy;
+      m.ground.stiffness = 1e7;
       const auto kg      = m.nodal_stiffness();
       for (unsigned int a = 0; a < m.n_nodes(); ++a)
         EXPECT_NEAR((kg[a] - k_nodes[a])[1][1],
@@ -610,4 +617,54 @@ TEST(MembraneState, DegreeTwoRingStructureStretchAndSplit)
   m.compute_forces();
   for (unsigned int e = 6; e < m.n_elements(); ++e)
     EXPECT_NEAR(m.tension[e], 1e5 * s, 1e-9 * 1e5 * s);
+}
+
+
+
+// (7) MembraneCoupling::time_step sums the projected stiffness D_i in
+// scratch of its own: called again on the same nodal fields (a program
+// that asks for the bound twice, or after the mass scaling wrote its
+// fictitious inertia) it returns the same bound, bit for bit, and without
+// mass scaling it leaves added_mass zero.
+TEST(MembraneState, CouplingTimeStepWritesOnlyTheFictitiousInertia)
+{
+  const auto  grid = test_tools::make_unit_box_grid<2>(8);
+  Membrane<2> m    = circle(40, 0.3, 0, 0.01);
+  for (auto &x : m.position)
+    x += Point<2>(0.5, 0.5);
+  m.compute_forces();
+  const PointLocator<2> locator(*grid);
+  for (unsigned int a = 0; a < m.n_nodes(); ++a)
+    {
+      m.cell[a] = locator.locate(m.position[a], 0);
+      ASSERT_NE(m.cell[a], BackgroundGrid<2>::invalid);
+    }
+  NodalFields<2> nodes;
+  nodes.resize(grid->n_nodes());
+  nodes.reset_active();
+  MembraneCoupling<2> coupling(*grid, m, 0.5 / 8);
+  coupling.p2g(nodes);
+  ASSERT_EQ(coupling.get_weights().size(), m.n_nodes());
+
+  auto added_norm = [&] {
+    double s = 0;
+    for (const auto &a : nodes.added_mass)
+      s += a.norm();
+    return s;
+  };
+  const double dt = coupling.time_step({}, {}, nodes);
+  EXPECT_GT(dt, 0);
+  EXPECT_EQ(added_norm(), 0.);
+  EXPECT_EQ(coupling.time_step({}, {}, nodes), dt);
+
+  // Mass scaling to ten times the bound: fictitious inertia, the same
+  // again on a second call, and gone without the floor.
+  const double scaled = coupling.time_step({}, {}, nodes, 10 * dt);
+  EXPECT_GE(scaled, 10 * dt * (1 - 1e-12));
+  const double added = added_norm();
+  EXPECT_GT(added, 0);
+  EXPECT_EQ(coupling.time_step({}, {}, nodes, 10 * dt), scaled);
+  EXPECT_EQ(added_norm(), added);
+  EXPECT_EQ(coupling.time_step({}, {}, nodes), dt);
+  EXPECT_EQ(added_norm(), 0.);
 }

@@ -4,13 +4,14 @@
 #include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
+#include <fsgmpm/step/membrane_coupling.h>
 
 namespace fsgmpm
 {
   /**
-   * The material points' and the membrane's whole state in a checkpoint
-   * (entries "particles/..." and "membrane/..."). Every array that a step
-   * reads before it rewrites it is stored, bit for bit.
+   * The material points', the membrane's and its coupling's whole state in
+   * a checkpoint (entries "particles/..." and "membrane/..."). Every array that
+   * a step reads before it rewrites it is stored, bit for bit.
    */
   namespace StateCheckpoint
   {
@@ -34,6 +35,15 @@ namespace fsgmpm
     template <int dim>
     void
     load(const CheckpointReader &in, Membrane<dim> &membrane);
+
+    /// The coupling's transfer weights ("membrane/weights").
+    template <int dim>
+    void
+    save(CheckpointWriter &out, const MembraneCoupling<dim> &coupling);
+
+    template <int dim>
+    void
+    load(const CheckpointReader &in, MembraneCoupling<dim> &coupling);
   } // namespace StateCheckpoint
 } // namespace fsgmpm
 

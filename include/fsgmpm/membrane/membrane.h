@@ -7,6 +7,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <fsgmpm/membrane/membrane_fe.h>
+#include <fsgmpm/membrane/membrane_ground.h>
 
 #include <array>
 #include <limits>
@@ -38,10 +39,10 @@ namespace fsgmpm
    * degree 1 or 2 on the codim-1 triangulation, forces by quadrature). Its
    * nodes are the elements' support points; they carry lumped mass and
    * velocity and exchange mass, momentum and their element forces with the
-   * background grid like material points (Stages::membrane_*), every support
-   * point alike. The element forces come from the current node positions
-   * against the rest geometry (total Lagrangian and stateless: slack is never
-   * forgotten and the strain cannot drift).
+   * background grid like material points (MembraneCoupling, in step/), every
+   * support point alike. The element forces come from the current node
+   * positions against the rest geometry (total Lagrangian and stateless: slack
+   * is never forgotten and the strain cannot drift).
    *
    * The geometry enters as a deal.II codimension-one triangulation
    * (Triangulation<dim-1, dim>); its initial shape, shrunk by 1 + initial
@@ -49,6 +50,10 @@ namespace fsgmpm
    * splitting, time-step bounds, output) the membrane is also a set of
    * straight "elements" between the nodes: the cells themselves at degree 1,
    * their halves (2D) or quarter triangles (3D) at degree 2.
+   *
+   * Its contact models are their own pieces: the frictionless slip along
+   * the fill (MembraneSlip, switched by tangential_slip) and the rigid
+   * ground (MembraneGround, held in ground).
    */
   template <int dim>
   class Membrane
@@ -125,17 +130,6 @@ namespace fsgmpm
     split_long_elements(const double       max_length,
                         const unsigned int unknown_cell);
 
-    /// Frictionless (slip) contact with the fill: move the nodes along the
-    /// membrane so that every cable (2D closed loop) or every ring edge (3D
-    /// extruded membrane, each ring in its z plane) has the same stretch
-    /// (uniform tension, as a fluid that carries no shear at rest allows).
-    /// The curve is kept: nodes are placed on circular arcs through three
-    /// consecutive nodes (averaged over the two arcs of each chord; exact on
-    /// circular pieces), and the mean tangential shift is zero. Returns the
-    /// largest shift. Does nothing for other membranes.
-    double
-    equalize_stretch();
-
     /// Length and signed x-y area (positive counter-clockwise) of a closed
     /// loop of nodes.
     double
@@ -155,10 +149,11 @@ namespace fsgmpm
     /// the axial stiffness EA/l t(x)t along the edge and the geometric
     /// stiffness T/l (I - t(x)t) across it (a taut cable resists sideways
     /// motion with its tension), plus the ground penalty along y
-    /// (node_ground_stiffness()): the directional stiffness that the nodal
-    /// time-step bound and the mass scaling need. With slip, the axial part
-    /// is loop_axial_stiffness() in every direction. In 3D without slip the
-    /// elastic part is the constant-strain triangles' row sums.
+    /// (MembraneGround::add_stiffness()): the directional stiffness that the
+    /// nodal time-step bound and the mass scaling need. With slip, the axial
+    /// part is MembraneSlip::loop_axial_stiffness() in every direction. In 3D
+    /// without slip the elastic part is the constant-strain triangles' row
+    /// sums.
     std::vector<SymmetricTensor<2, dim>>
     nodal_stiffness() const;
 
@@ -185,55 +180,27 @@ namespace fsgmpm
     bool
     is_closed_loop() const;
 
-    MembraneProperties properties;
-
-  private:
-    /// With slip (2D closed loop, 3D rings): per node, a bound on the
-    /// stiffness that the loop's length change gives it, (EA/L) |theta_a|
-    /// sum_b |theta_b| (theta: turning angle at the node, floored at the
-    /// circle's pi (l_a + l_{a-1}) / L; 3D: times the node's share of the
-    /// height); nodal_stiffness() uses it in place of the edges' EA/l in x-y,
-    /// which equalize_stretch() spreads.
-    std::vector<double>
-    loop_axial_stiffness() const;
-
     /// The nodes in loop order: the first ring of an extruded 3D membrane,
     /// else the first node of every element (a 2D closed loop is stored in
     /// loop order).
     std::vector<unsigned int>
     loop_nodes() const;
 
-    /// equalize_stretch() on one closed loop of nodes with the rest lengths
-    /// of its edges.
-    double
-    equalize_loop(const std::vector<unsigned int> &loop,
-                  const std::vector<double>       &rest_length);
+    MembraneProperties properties;
 
+  private:
     /// Sets rings if every z level of the nodes is one closed loop of
     /// element edges (3D).
     void
     find_rings();
 
   public:
-    /// Frictionless contact with the fill (2D, 3D rings): equalize_stretch()
-    /// after every position update.
+    /// Frictionless contact with the fill (2D, 3D rings; MembraneSlip):
+    /// the coupling equalizes the stretch after every position update, and
+    /// nodal_stiffness() bounds the axial part by the loop's.
     bool tangential_slip = false;
-    /// Transfer weights of each node to the nodes of its cell, set by
-    /// Stages::membrane_p2g and used by the other membrane stages of the
-    /// step.
-    std::vector<std::array<double, dim + 1>> weights;
-
-    /// Rigid frictionless ground y = ground_level acting on the membrane
-    /// nodes themselves (penalty node_ground_stiffness()), so that the membrane
-    /// can rest on it exactly instead of one cell early as with a wall of the
-    /// grid. Off if not finite.
-    double ground_level     = -std::numeric_limits<double>::infinity();
-    double ground_stiffness = 0;
-
-    /// The ground penalty of node a (N/m): ground_stiffness in 2D (per
-    /// metre of depth), ground_stiffness times the node's width in 3D.
-    double
-    node_ground_stiffness(const unsigned int a) const;
+    /// Rigid frictionless ground acting on the nodes (off by default).
+    MembraneGround<dim> ground;
 
     // --- nodes -----------------------------------------------------------
     std::vector<Point<dim>>     position;

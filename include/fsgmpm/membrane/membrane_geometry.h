@@ -90,6 +90,19 @@ namespace fsgmpm
     /// counter-clockwise).
     double
     signed_area(const std::vector<Point<2>> &outline);
+
+    /// Point at fraction @p t of the arc from @p from to @p to on the circle
+    /// through @p a, @p b, @p c in x-y (z is kept); the chord where the
+    /// three points are (nearly) collinear. The degree-2 membrane's initial
+    /// edge midpoints and the slip (MembraneSlip) place nodes with it.
+    template <int dim>
+    Point<dim>
+    point_on_arc(const Point<dim> &a,
+                 const Point<dim> &b,
+                 const Point<dim> &c,
+                 const Point<dim> &from,
+                 const Point<dim> &to,
+                 const double      t);
   } // namespace MembraneGeometry
 } // namespace fsgmpm
 

@@ -78,10 +78,25 @@ namespace fsgmpm
             NodalFields<dim>                             &nodes,
             SmoothingFields<dim>                         &smoothing);
 
-    /// Couple a membrane (FEM-MPM, Eqs. 19-21); cables longer than
-    /// @p split_length are split when they stretch (0: never).
+    /// Couple a membrane (FEM-MPM, Eqs. 19-21) through a MembraneCoupling
+    /// that the step owns; cables longer than @p split_length are split
+    /// when they stretch (0: never).
     void
     attach_membrane(Membrane<dim> &membrane, const double split_length);
+
+    /// The coupling of the attached membrane (its transfer weights; for a
+    /// checkpoint, or to run its stages in a program's own order); null
+    /// without a membrane.
+    MembraneCoupling<dim> *
+    get_membrane_coupling()
+    {
+      return membrane_coupling.get();
+    }
+    const MembraneCoupling<dim> *
+    get_membrane_coupling() const
+    {
+      return membrane_coupling.get();
+    }
 
     /// Stage 1 (Eqs. 3, 4, 17): points and membrane to the grid. Does not
     /// depend on dt.
@@ -128,8 +143,8 @@ namespace fsgmpm
     ParticleStore<dim>                           &particles;
     NodalFields<dim>                             &nodes;
     SmoothingFields<dim>                         &smoothing;
-    Membrane<dim>                                *membrane = nullptr;
-    double                                        membrane_split_length = 0;
+    /// The attached membrane's coupling, if any.
+    std::unique_ptr<MembraneCoupling<dim>> membrane_coupling;
     /// Per cell sum_p V_p M_p for the membrane's nodal time-step bound.
     std::vector<double> cell_stiffness;
 

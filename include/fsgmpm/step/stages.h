@@ -5,9 +5,9 @@
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/material.h>
-#include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/step/material_options.h>
+#include <fsgmpm/step/membrane_coupling.h>
 #include <fsgmpm/step/smoothing_fields.h>
 #include <fsgmpm/step/stress_integration.h>
 
@@ -30,6 +30,10 @@ namespace fsgmpm
    *                    -> relocate
    *   USL:             the same without remap
    *   (field_contact and contact_normals act only with two velocity fields)
+   *
+   * A membrane takes part through its MembraneCoupling
+   * (step/membrane_coupling.h), whose stages follow p2g, grid_update
+   * (g2p), remap (inside it), update_positions and relocate.
    *
    * Particles must be sorted by cell (ParticleStore::sort_by_cell) before
    * p2g. Scatters run in parallel over the cells of one colour, so they are
@@ -96,8 +100,8 @@ namespace fsgmpm
                 NodalFields<dim>            &nodes);
 
     /// Multi-field contact, part 1 (once per step, after p2g and
-    /// membrane_p2g): at every node of field 0 the contact normal, field
-    /// 0's outward normal from its smoothed nodal mass
+    /// MembraneCoupling::p2g): at every node of field 0 the contact normal,
+    /// field 0's outward normal from its smoothed nodal mass
     /// (NodalFields::contact_normal), and the volume of the points of both
     /// fields (NodalFields::contact_volume). Nothing to do with one field.
     template <int dim>
@@ -140,7 +144,9 @@ namespace fsgmpm
     /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
     /// membrane-node) momenta, with the kinematic wall conditions
     /// (NodalConstraints::apply_kinematic: no penetration, no second
-    /// friction impulse); suppresses the small-mass-node instability. With
+    /// friction impulse); suppresses the small-mass-node instability. The
+    /// membrane nodes' momenta come from @p membrane (its coupling,
+    /// MembraneCoupling::remap), if given. With
     /// @p affine (APIC affine remap) the remap carries APIC's affine term,
     /// i.e. keeps the grid-updated velocity, at nodes whose points fill a
     /// quarter of their volume or more, blended to the mass average below.
@@ -150,7 +156,7 @@ namespace fsgmpm
           const ParticleStore<dim>    &particles,
           const NodalConstraints<dim> &constraints,
           NodalFields<dim>            &nodes,
-          const Membrane<dim>         *membrane = nullptr,
+          const MembraneCoupling<dim> *membrane = nullptr,
           const bool                   affine   = false);
 
     /// Stage 5a: the velocity gradient of every occupied cell (constant on
@@ -280,7 +286,7 @@ namespace fsgmpm
     /// source/step/time_step.cc). If @p cell_stiffness is given, it is set
     /// to sum_p V_p rho_p s_p^2 per cell (s_p the same signal speed; zero in
     /// empty cells), the points' share of the nodal bound of
-    /// membrane_time_step().
+    /// MembraneCoupling::time_step().
     template <int dim>
     double
     stable_time_step(const BackgroundGrid<dim>                    &grid,
@@ -288,78 +294,6 @@ namespace fsgmpm
                      const std::vector<std::unique_ptr<Material>> &materials,
                      const double                                  courant,
                      std::vector<double> *cell_stiffness = nullptr);
-
-    // --- FEM-MPM membrane coupling (shared grid nodes) -------------------
-    // Membrane nodes take part in the transfers like material points, with
-    // shape values only: p2g after Stages::p2g, g2p after the grid update,
-    // their momentum in the remap, positions with the remapped velocities,
-    // and element forces from the new positions.
-
-    /// Stage 1m: mass, momentum and element forces of the membrane nodes to
-    /// the nodes of their cells (which become active), with the transfer
-    /// weights (Membrane::weights) that the other membrane stages of the
-    /// step reuse. Call after Stages::p2g.
-    template <int dim>
-    void
-    membrane_p2g(const BackgroundGrid<dim> &grid,
-                 Membrane<dim>             &membrane,
-                 NodalFields<dim>          &nodes);
-
-    /// Nodal time-step bound of SPEC 2 with the membrane: min over the grid
-    /// nodes the membrane touches and over directions of 2 sqrt(m_i / k),
-    /// k an eigenvalue of the block Gershgorin bound of the stiffness at
-    /// node i: the membrane's, projected to the node, plus the material
-    /// points' sum_c S_c |grad N_i^c| sum_j |grad N_j^c| (S_c from
-    /// stable_time_step()'s @p cell_stiffness over @p occupied_cells). The
-    /// points' share matters at nearly empty nodes of partly covered cells
-    /// (the geotube's lower corners): the membrane nodes take their grid
-    /// velocity before the remap (PIC), so such a node's small mass is not
-    /// protected by Eq. (20) as the points are. Without the Courant factor.
-    /// If @p dt_floor > 0 (dynamic relaxation with mass scaling), the
-    /// directions whose bound would fall below dt_floor get the fictitious
-    /// inertia NodalFields::added_mass = (k dt_floor^2 / 4 - m_i) e(x)e
-    /// instead (along the cables, not across them), and the returned bound
-    /// is at least dt_floor.
-    template <int dim>
-    double
-    membrane_time_step(const BackgroundGrid<dim>       &grid,
-                       const Membrane<dim>             &membrane,
-                       const std::vector<double>       &cell_stiffness,
-                       const std::vector<unsigned int> &occupied_cells,
-                       NodalFields<dim>                &nodes,
-                       const double                     dt_floor = 0);
-
-    /// Stage 3m: membrane-node velocities from the grid velocities (PIC).
-    template <int dim>
-    void
-    membrane_g2p(const BackgroundGrid<dim> &grid,
-                 const NodalFields<dim>    &nodes,
-                 Membrane<dim>             &membrane);
-
-    /// Stage 4m: the membrane nodes' momenta added to the remap (Eq. 20).
-    template <int dim>
-    void
-    membrane_remap(const BackgroundGrid<dim> &grid,
-                   const Membrane<dim>       &membrane,
-                   NodalFields<dim>          &nodes);
-
-    /// Stage 6m: x_a += dt sum_i N_i(x_a) v_i. Returns the largest
-    /// displacement over the cell's smallest altitude.
-    template <int dim>
-    double
-    membrane_positions(const BackgroundGrid<dim> &grid,
-                       const NodalFields<dim>    &nodes,
-                       const double               dt,
-                       Membrane<dim>             &membrane);
-
-    /// Stage 7m: split cables longer than @p max_length, locate the nodes,
-    /// and recompute the element forces from the new positions. Returns the
-    /// number of nodes outside the mesh (their cell is unchanged).
-    template <int dim>
-    unsigned int
-    membrane_relocate(const BackgroundGrid<dim> &grid,
-                      const double               max_length,
-                      Membrane<dim>             &membrane);
   } // namespace Stages
 } // namespace fsgmpm
 

@@ -1,0 +1,49 @@
+#ifndef fsgmpm_membrane_membrane_slip_h
+#define fsgmpm_membrane_membrane_slip_h
+
+#include <fsgmpm/membrane/membrane.h>
+
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * Frictionless (slip) contact between the membrane and its fill
+   * (Membrane::tangential_slip): a fluid at rest carries no shear, so the
+   * tension is uniform along the membrane. After every position update the
+   * nodes are moved along the membrane so that every cable (2D closed loop)
+   * or every ring edge (3D membrane extruded along z, each ring in its z
+   * plane) has the same stretch. Applies to those two kinds of membrane
+   * only (applies()).
+   */
+  namespace MembraneSlip
+  {
+    /// True if the slip can act on @p membrane: a 2D closed loop, or a 3D
+    /// membrane with rings (Membrane::rings).
+    template <int dim>
+    bool
+    applies(const Membrane<dim> &membrane);
+
+    /// Moves the nodes along the membrane to equal stretch. The curve is
+    /// kept: nodes are placed on circular arcs through three consecutive
+    /// nodes (averaged over the two arcs of each chord; exact on circular
+    /// pieces), and the mean tangential shift is zero. 3D: the nodes
+    /// stacked along z first take their mean x-y position. Returns the
+    /// largest shift; does nothing (returns 0) unless applies().
+    template <int dim>
+    double
+    equalize_stretch(Membrane<dim> &membrane);
+
+    /// Per node, a bound on the stiffness that the loop's length change
+    /// gives it, (EA/L) |theta_a| sum_b |theta_b| (theta: turning angle at
+    /// the node, floored at the circle's pi (l_a + l_{a-1}) / L; 3D: times
+    /// the node's share of the height). With slip, Membrane::
+    /// nodal_stiffness() uses it in place of the edges' EA/l in x-y, which
+    /// equalize_stretch() spreads. Needs applies().
+    template <int dim>
+    std::vector<double>
+    loop_axial_stiffness(const Membrane<dim> &membrane);
+  } // namespace MembraneSlip
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,137 @@
+#ifndef fsgmpm_step_membrane_coupling_h
+#define fsgmpm_step_membrane_coupling_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/nodal_fields.h>
+#include <fsgmpm/membrane/membrane.h>
+
+#include <array>
+#include <vector>
+
+namespace fsgmpm
+{
+  /**
+   * The FEM-MPM coupling of a membrane to the background grid through the
+   * shared grid nodes (paper Section 2.1.2, Eqs. 17-21): the membrane's
+   * stages of the explicit step, and the state that only the step needs,
+   * the transfer weights N_i(x_a) of every membrane node to the nodes of
+   * its cell. The membrane nodes take part in the transfers like material
+   * points, with shape values only (never gradients):
+   *
+   *   p2g() after Stages::p2g -> time_step() -> g2p() after the grid update
+   *   -> remap() inside Stages::remap -> update_positions()
+   *   -> relocate() after Stages::relocate
+   *
+   * The weights are the shape values at the start of the step, set by
+   * p2g() and used by every other stage of the step. The membrane is small
+   * (10^2-10^4 nodes against 10^5 points), so the stages run serially.
+   * MpmStep owns one when a membrane is attached.
+   */
+  template <int dim>
+  class MembraneCoupling
+  {
+  public:
+    /// Couples @p membrane to @p grid; cables longer than @p split_length
+    /// are split when they stretch (0: never).
+    MembraneCoupling(const BackgroundGrid<dim> &grid,
+                     Membrane<dim>             &membrane,
+                     const double               split_length = 0);
+
+    /// Stage 1m (Eqs. 3, 4, 17): mass, momentum and element forces of the
+    /// membrane nodes to the nodes of their cells (which become active),
+    /// with the transfer weights at the nodes' current positions, which the
+    /// other stages of the step reuse. Call after Stages::p2g.
+    void
+    p2g(NodalFields<dim> &nodes);
+
+    /// Nodal time-step bound of SPEC 2 with the membrane: min over the grid
+    /// nodes the membrane touches and over directions of 2 sqrt(m_i / k),
+    /// k an eigenvalue of the block Gershgorin bound of the stiffness at
+    /// node i: the membrane's, projected to the node, plus the material
+    /// points' sum_c S_c |grad N_i^c| sum_j |grad N_j^c| (S_c from
+    /// Stages::stable_time_step()'s @p cell_stiffness over @p
+    /// occupied_cells). The points' share matters at nearly empty nodes of
+    /// partly covered cells (the geotube's lower corners): the membrane
+    /// nodes take their grid velocity before the remap (PIC), so such a
+    /// node's small mass is not protected by Eq. (20) as the points are.
+    /// Without the Courant factor. If @p dt_floor > 0 (dynamic relaxation
+    /// with mass scaling), the directions whose bound would fall below
+    /// dt_floor get the fictitious inertia NodalFields::added_mass = (k
+    /// dt_floor^2 / 4 - m_i) e(x)e instead (along the cables, not across
+    /// them), and the returned bound is at least dt_floor. Writes nothing
+    /// else to @p nodes. After p2g().
+    double
+    time_step(const std::vector<double>       &cell_stiffness,
+              const std::vector<unsigned int> &occupied_cells,
+              NodalFields<dim>                &nodes,
+              const double                     dt_floor = 0);
+
+    /// Stage 3m: membrane-node velocities from the grid velocities (PIC:
+    /// the nodes' mass is negligible, and PIC keeps their velocity free of
+    /// noise).
+    void
+    g2p(const NodalFields<dim> &nodes);
+
+    /// Stage 4m: the membrane nodes' momenta added to the nodal momenta of
+    /// the remap (Eq. 20; Stages::remap calls it).
+    void
+    remap(NodalFields<dim> &nodes) const;
+
+    /// Stage 6m: x_a += dt sum_i N_i(x_a) v_i. Returns the largest
+    /// displacement over the cell's smallest altitude.
+    double
+    update_positions(const NodalFields<dim> &nodes, const double dt);
+
+    /// Stage 7m: the slip (MembraneSlip::equalize_stretch, if the membrane
+    /// slips along its fill), splits of cables longer than the split length,
+    /// the nodes' cells, and the element forces from the new positions.
+    /// Returns the number of nodes outside the mesh (their cell is
+    /// unchanged).
+    unsigned int
+    relocate();
+
+    /// The transfer weights of each membrane node to the nodes of its cell
+    /// (barycentric coordinates), as of the last p2g().
+    const std::vector<std::array<double, dim + 1>> &
+    get_weights() const
+    {
+      return weights;
+    }
+
+    /// Restores the weights (a checkpoint).
+    void
+    set_weights(const std::vector<std::array<double, dim + 1>> &w)
+    {
+      weights = w;
+    }
+
+    double
+    get_split_length() const
+    {
+      return split_length;
+    }
+
+  private:
+    const BackgroundGrid<dim> &grid;
+    Membrane<dim>             &membrane;
+    const double               split_length;
+
+    std::vector<std::array<double, dim + 1>> weights;
+
+    /// sum_i N_i(x_a) v_i over the nodes of node a's cell, with the
+    /// transfer weights.
+    Tensor<1, dim>
+    grid_velocity(const NodalFields<dim> &nodes, const unsigned int a) const;
+
+    /// Scratch of time_step(), kept between steps: the grid nodes the
+    /// membrane touches (sorted), and at each the membrane's projected
+    /// stiffness D_i and the points' row sum.
+    std::vector<unsigned int>            touched;
+    std::vector<SymmetricTensor<2, dim>> touched_stiffness;
+    std::vector<double>                  touched_points;
+  };
+} // namespace fsgmpm
+
+#endif

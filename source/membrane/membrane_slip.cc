@@ -1,0 +1,215 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fsgmpm/membrane/membrane_geometry.h>
+#include <fsgmpm/membrane/membrane_slip.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fsgmpm
+{
+  namespace MembraneSlip
+  {
+    namespace
+    {
+      // equalize_stretch() on one closed loop of nodes @p node with the
+      // rest lengths of its edges, in x-y (a 3D ring in its plane).
+      template <int dim>
+      double
+      equalize_loop(std::vector<Point<dim>>         &position,
+                    const std::vector<unsigned int> &node,
+                    const std::vector<double>       &rest_length)
+      {
+        const unsigned int  n = node.size();
+        std::vector<double> s(n + 1, 0.), S(n + 1, 0.);
+        for (unsigned int e = 0; e < n; ++e)
+          {
+            const Point<dim> &a = position[node[e]];
+            const Point<dim> &b = position[node[(e + 1) % n]];
+            s[e + 1]            = s[e] + std::hypot(b[0] - a[0], b[1] - a[1]);
+            S[e + 1]            = S[e] + rest_length[e];
+          }
+        const double length = s[n], rest = S[n];
+        // Target arc length of node k: proportional to the rest length
+        // before it, shifted so that the mean shift is zero (no drift along
+        // the loop).
+        double shift = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          shift += s[k] - S[k] * length / rest;
+        shift /= n;
+
+        // Point at fraction t of the arc from node e to node e+1, on the
+        // circle through (e-1, e, e+1) and on the one through (e, e+1,
+        // e+2), averaged: exact on circular pieces, so the enclosed area is
+        // kept.
+        auto curve = [&](const unsigned int e, const double t) {
+          const Point<dim> &p0 = position[node[(e + n - 1) % n]],
+                           &p1 = position[node[e]],
+                           &p2 = position[node[(e + 1) % n]],
+                           &p3 = position[node[(e + 2) % n]];
+          const Point<dim> x
+            = MembraneGeometry::point_on_arc(p0, p1, p2, p1, p2, t);
+          const Point<dim> y
+            = MembraneGeometry::point_on_arc(p1, p2, p3, p1, p2, t);
+          return Point<dim>(0.5 * (x + y));
+        };
+
+        std::vector<Point<dim>> moved(n);
+        double                  max_move = 0;
+        unsigned int            e        = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            double target = S[k] * length / rest + shift;
+            target        = std::fmod(target + length, length);
+            // Find the chord holding the target arc length (monotone in k
+            // up to the wrap-around).
+            unsigned int tries = 0;
+            while (!(s[e] <= target && target <= s[e + 1]) && tries++ <= n)
+              e = (e + 1) % n;
+            const double t
+              = (s[e + 1] > s[e]) ? (target - s[e]) / (s[e + 1] - s[e]) : 0.;
+            moved[k] = curve(e, t);
+            max_move = std::max(max_move, moved[k].distance(position[node[k]]));
+          }
+        for (unsigned int k = 0; k < n; ++k)
+          position[node[k]] = moved[k];
+        return max_move;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    bool
+    applies(const Membrane<dim> &membrane)
+    {
+      return dim == 2 ? membrane.is_closed_loop() : !membrane.rings.empty();
+    }
+
+
+
+    template <int dim>
+    double
+    equalize_stretch(Membrane<dim> &membrane)
+    {
+      if (!applies(membrane))
+        return 0;
+      auto &position = membrane.position;
+      if constexpr (dim == 2)
+        return equalize_loop(position,
+                             membrane.loop_nodes(),
+                             membrane.rest_size);
+      else
+        {
+          // Extruded membrane in a slab with roller faces (plane strain):
+          // the nodes stacked along z share their x-y position (the grid's
+          // tetrahedra move the front and back faces slightly differently,
+          // which the membrane's shear stiffness would turn into large
+          // forces), and the rings are equalized as the 2D loop.
+          const auto                   &rings        = membrane.rings;
+          const std::vector<Point<dim>> old_position = position;
+          const unsigned int            n            = rings[0].size();
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              double x = 0, y = 0;
+              for (const auto &ring : rings)
+                {
+                  x += position[ring[k]][0] / rings.size();
+                  y += position[ring[k]][1] / rings.size();
+                }
+              position[rings[0][k]][0] = x;
+              position[rings[0][k]][1] = y;
+            }
+          equalize_loop(position, rings[0], membrane.ring_rest_length[0]);
+          double max_move = 0;
+          for (const auto &ring : rings)
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                position[ring[k]][0] = position[rings[0][k]][0];
+                position[ring[k]][1] = position[rings[0][k]][1];
+                max_move
+                  = std::max(max_move,
+                             position[ring[k]].distance(old_position[ring[k]]));
+              }
+          return max_move;
+        }
+    }
+
+
+
+    template <int dim>
+    std::vector<double>
+    loop_axial_stiffness(const Membrane<dim> &membrane)
+    {
+      // Per loop node k: (EA/L) max(|theta_k|, 2 pi l_k/L) sum_j |theta_j|,
+      // with l_k the mean length of the two edges at k; the floor keeps the
+      // bound of a circle (theta = 2 pi l/L) on straight pieces, where the
+      // one pass of equalize_stretch() leaves some local stiffness. 3D: the
+      // first ring's value times each node's share of the height.
+      const auto                     &position = membrane.position;
+      const std::vector<unsigned int> loop     = membrane.loop_nodes();
+      const unsigned int              n        = loop.size();
+      std::vector<double>             theta(n), l(n);
+      std::vector<Tensor<1, dim>>     t(n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          t[k] = position[loop[(k + 1) % n]] - position[loop[k]];
+          l[k] = t[k].norm();
+          if (l[k] > 0)
+            t[k] /= l[k];
+        }
+      double sum = 0, length = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const unsigned int p = (k + n - 1) % n;
+          // A zero-length edge (coincident nodes) adds no turning.
+          theta[k] = (l[p] > 0 && l[k] > 0)
+                       ? std::acos(std::clamp(t[p] * t[k], -1., 1.))
+                       : 0.;
+          sum += theta[k];
+          length += l[k];
+        }
+      AssertThrow(length > 0,
+                  ExcMessage("The membrane loop has zero length (all its "
+                             "nodes coincide)."));
+      const double        EA = membrane.properties.axial_stiffness;
+      std::vector<double> value(n);
+      for (unsigned int k = 0; k < n; ++k)
+        value[k]
+          = EA / length * sum
+            * std::max(theta[k], M_PI * (l[k] + l[(k + n - 1) % n]) / length);
+
+      std::vector<double> k_node(membrane.n_nodes(), 0.);
+      if constexpr (dim == 2)
+        for (unsigned int k = 0; k < n; ++k)
+          k_node[loop[k]] = value[k];
+      else
+        {
+          // Each ring's share of the height: half the distance between its
+          // neighbouring rings (rings need at least two).
+          const auto        &rings   = membrane.rings;
+          const unsigned int n_rings = rings.size();
+          auto               z       = [&](const unsigned int r) {
+            return position[rings[r][0]][dim - 1];
+          };
+          for (unsigned int r = 0; r < n_rings; ++r)
+            {
+              const double share = 0.5
+                                   * std::abs(z(std::min(r + 1, n_rings - 1))
+                                              - z(r > 0 ? r - 1 : 0));
+              for (unsigned int k = 0; k < n; ++k)
+                k_node[rings[r][k]] = share * value[k];
+            }
+        }
+      return k_node;
+    }
+
+#define FSGMPM_INSTANTIATE(dim)                                        \
+  template bool                applies<dim>(const Membrane<dim> &);    \
+  template double              equalize_stretch<dim>(Membrane<dim> &); \
+  template std::vector<double> loop_axial_stiffness<dim>(const Membrane<dim> &);
+    FSGMPM_INSTANTIATE(2)
+    FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
+  } // namespace MembraneSlip
+} // namespace fsgmpm
