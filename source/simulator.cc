@@ -253,6 +253,30 @@ namespace fsgmpm
                                         membrane->position[a][1]);
         if (MembraneGeometry::signed_area(membrane_outline) < 0)
           std::reverse(membrane_outline.begin(), membrane_outline.end());
+        // The fill spans the grid's z range (the slab's walls close the
+        // ends); a shorter surface would leave fill outside it.
+        double z_low = std::numeric_limits<double>::max(), z_high = -z_low;
+        for (const auto &x : membrane->position)
+          {
+            z_low  = std::min(z_low, x[dim - 1]);
+            z_high = std::max(z_high, x[dim - 1]);
+          }
+        const double tolerance
+          = 1e-6 * (membrane_z_range.second - membrane_z_range.first);
+        for (const auto &body : bodies)
+          AssertThrow(!body.fills_membrane
+                        || (z_low <= membrane_z_range.first + tolerance
+                            && z_high >= membrane_z_range.second - tolerance),
+                      ExcMessage(
+                        body.path
+                        + "/Shape = membrane fills the Gmsh surface over the "
+                          "grid's z range ["
+                        + format(membrane_z_range.first) + ", "
+                        + format(membrane_z_range.second)
+                        + "], but the surface spans only z in [" + format(z_low)
+                        + ", " + format(z_high)
+                        + "]: extrude it over the whole grid, or fit the grid "
+                          "to it."));
       }
     for (const auto &body : bodies)
       AssertThrow(!body.fills_membrane || !membrane_outline.empty(),

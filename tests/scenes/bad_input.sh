@@ -55,6 +55,7 @@ expect_error "3D slip on a Gmsh membrane" "slip needs a 2D membrane or, in 3D, a
 expect_error "membrane DataOut in HDF5" "Membrane output = finite elements is written as VTU" "$2/../prm/geotube_A5.56.prm" --set "Output/Format=hdf5" --set "Output/Membrane output=finite elements"
 expect_error "missing Gmsh membrane" "Membrane/Mesh file: cannot open the Gmsh file <no_such_membrane.msh>" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh" --set "Membrane/Tangential coupling=no-slip" --set "Membrane/Mesh file=no_such_membrane.msh"
 expect_error "Gmsh membrane of tetrahedra" "type 4; a membrane surface consists of 3-node or 6-node triangles" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh" --set "Membrane/Tangential coupling=no-slip" --set "Membrane/Mesh file=$2/meshes/cube_tetrahedra.msh"
+expect_error "Gmsh membrane shorter than the grid" "but the surface spans only z in \[0, 0.16\]" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh" --set "Membrane/Tangential coupling=no-slip" --set "Membrane/Mesh file=$2/meshes/geotube_A5.56_p1.msh" --set "Grid/Extrusion thickness=0.32"
 expect_error "unknown velocity transfer" "Velocity transfer" --set "Simulation/Velocity transfer=PIC"
 expect_error "affine remap with USL" "APIC affine remap.*USL" --set "Simulation/Velocity transfer=APIC affine remap" --set "Simulation/Update scheme=USL"
 expect_error "body outside the mesh" "Body 0.*outside the background mesh" --set "Bodies/Body 0/Box upper corner=1.5, 0.4"
