@@ -539,8 +539,7 @@ namespace fsgmpm
         termination = relaxed;
         return false;
       }
-    if (time >= params.time_step.end_time * (1 - 1e-14)
-        || (params.max_steps > 0 && step >= params.max_steps))
+    if (time_step_control.reached_end(time, step))
       {
         termination = Termination::end_time;
         return false;

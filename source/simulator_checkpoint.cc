@@ -296,8 +296,7 @@ namespace fsgmpm
           }
         check_checkpoint_parameters(*in);
         load_checkpoint(*in);
-        AssertThrow(time < params.time_step.end_time * (1 - 1e-14)
-                      && (params.max_steps == 0 || step < params.max_steps),
+        AssertThrow(!time_step_control.reached_end(time, step),
                     ExcMessage("The checkpoint <" + file.string()
                                + "> is at t = " + std::to_string(time)
                                + " s, step " + std::to_string(step)

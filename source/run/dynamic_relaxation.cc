@@ -1,5 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/dynamic_relaxation.h>
 
 #include <algorithm>

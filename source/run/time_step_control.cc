@@ -18,6 +18,10 @@ namespace fsgmpm
                         "0.6",
                         Patterns::Double(0),
                         "Simulated time at which the run stops (s, > 0).");
+      prm.declare_entry("Maximum number of steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Stop after this many steps (0: no limit).");
       prm.declare_entry("Courant number",
                         "0.5",
                         Patterns::Double(0, 1),
@@ -38,9 +42,10 @@ namespace fsgmpm
   TimeStepControl::Settings::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Simulation");
-    end_time = prm.get_double("End time");
-    courant  = prm.get_double("Courant number");
-    fixed_dt = prm.get_double("Fixed time step");
+    end_time  = prm.get_double("End time");
+    courant   = prm.get_double("Courant number");
+    fixed_dt  = prm.get_double("Fixed time step");
+    max_steps = prm.get_integer("Maximum number of steps");
     prm.leave_subsection();
     AssertThrow(end_time > 0,
                 dealii::ExcMessage("Simulation/End time must be positive."));
@@ -55,6 +60,16 @@ namespace fsgmpm
   TimeStepControl::TimeStepControl(const Settings &settings)
     : settings(settings)
   {}
+
+
+
+  bool
+  TimeStepControl::reached_end(const double time, const unsigned int step) const
+  {
+    // choose() lands the last step on the end time up to round-off.
+    return time >= settings.end_time * (1 - 1e-14)
+           || (settings.max_steps > 0 && step >= settings.max_steps);
+  }
 
 
 

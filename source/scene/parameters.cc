@@ -31,10 +31,6 @@ namespace fsgmpm
                         "2",
                         Patterns::Integer(2, 3),
                         "2 (plane strain, triangles) or 3 (tetrahedra).");
-      prm.declare_entry("Maximum number of steps",
-                        "0",
-                        Patterns::Integer(0),
-                        "Stop after this many steps (0: no limit).");
       prm.declare_entry("Update scheme",
                         "MUSL",
                         Patterns::Selection("MUSL|USL"),
@@ -276,7 +272,6 @@ namespace fsgmpm
   Parameters<dim>::Parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Simulation");
-    max_steps         = prm.get_integer("Maximum number of steps");
     use_musl          = (prm.get("Update scheme") == "MUSL");
     use_apic          = (prm.get("Velocity transfer") != "FLIP");
     apic_affine_remap = (prm.get("Velocity transfer") == "APIC affine remap");

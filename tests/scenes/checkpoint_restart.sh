@@ -68,7 +68,7 @@ run_scene() {
 }
 
 # The dam break (NMD + ANP, free surface, one velocity field).
-run_scene dam_break "$src/prm/default_dam_break.prm" 0.01 --set "Simulation/End time=0.08"
+run_scene dam_break "$src/prm/default_dam_break.prm" 0.01 --set "Simulation/End time=0.04"
 # The granular collapse (Mohr-Coulomb, APIC with its affine remap, which
 # crashed on 2 threads before this test existed).
 run_scene granular "$src/prm/granular_column_collapse.prm" 0.05 \
@@ -76,16 +76,16 @@ run_scene granular "$src/prm/granular_column_collapse.prm" 0.05 \
   --set "Simulation/Velocity transfer=APIC affine remap"
 # The geotube (membrane with splitting and slip, kinetic damping, ground),
 # with HDF5 + XDMF output.
-run_scene geotube "$src/prm/geotube_A5.56.prm" 0.5 \
-  --set "Grid/Cell size=0.32" --set "Simulation/End time=6" \
+run_scene geotube "$src/prm/geotube_A5.56.prm" 0.4 \
+  --set "Grid/Cell size=0.32" --set "Simulation/End time=2.4" \
   --set "Simulation/Termination=end_time" --set "Output/Format=hdf5"
 # The 3D geotube (membrane triangles with their reference shapes).
 run_scene geotube_3d "$src/prm/geotube_A5.56_3d.prm" 0.1 \
   --set "Grid/Cell size=0.32" --set "Grid/Extrusion thickness=0.32" \
-  --set "Simulation/End time=0.6" --set "Simulation/Termination=end_time"
+  --set "Simulation/End time=0.3" --set "Simulation/Termination=end_time"
 # The geocontainer (sand, geotextile no-slip, water in its own field, contact).
 run_scene geocontainer "$src/prm/geocontainer_polygon.prm" 0.02 \
-  --set "Grid/Cell size=0.08" --set "Simulation/End time=0.2"
+  --set "Grid/Cell size=0.08" --set "Simulation/End time=0.1"
 
 # Bad restarts.
 scene=("$src/prm/default_dam_break.prm" --set "Output/Quiet=true" --set "Output/Checkpoint interval=0.01")
@@ -101,11 +101,11 @@ for f in damaged/checkpoints/*.h5; do printf 'garbage' | dd of="$f" bs=1 seek=50
 "$exe" "${scene[@]}" --set "Simulation/End time=0.2" --restart damaged >/dev/null 2>damaged.err
 check "every checkpoint damaged: exit 1" test $? -eq 1
 check "every checkpoint damaged: says so" grep -q "no checkpoint reads back intact" damaged.err
-"$exe" "${scene[@]}" --set "Simulation/End time=0.08" --restart dam_break.full >/dev/null 2>end.err
+"$exe" "${scene[@]}" --set "Simulation/End time=0.04" --restart dam_break.full >/dev/null 2>end.err
 check "at the end time already: exit 1" test $? -eq 1
 check "at the end time already: says to raise it" grep -q "raise them to continue" end.err
 # A finished run continues to a later end time from its final checkpoint.
-"$exe" "${scene[@]}" --set "Simulation/End time=0.1" --restart dam_break.full >/dev/null
+"$exe" "${scene[@]}" --set "Simulation/End time=0.05" --restart dam_break.full >/dev/null
 check "a finished run continues to a later end time" grep -q '"termination": "end_time"' dam_break.full/summary.json
 
 # A full disk (a 6 MB tmpfs; skipped where mounting is not permitted): the

@@ -71,7 +71,10 @@ namespace
     prm->leave_subsection();
     prm->leave_subsection();
     prm->enter_subsection("Output");
-    prm->set("Directory", "output_geotube_coarse");
+    // One directory per scene, so that ctest -j runs the 2D and 3D entries
+    // side by side.
+    prm->set("Directory",
+             "output_geotube_coarse_" + scene.substr(0, scene.rfind('.')));
     prm->set("Quiet", true);
     prm->leave_subsection();
     return prm;

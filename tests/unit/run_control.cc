@@ -45,6 +45,14 @@ TEST(TimeStepControl, AutomaticFixedAndEndTime)
   automatic.record_step(3);
   EXPECT_DOUBLE_EQ(automatic.dt_min(), 0.1);
   EXPECT_EQ(automatic.dt_max(), 0.3);
+  // The end: at 0.9 + 0.1 (round-off below 1 included), not at 0.9.
+  EXPECT_FALSE(automatic.reached_end(0.9, 2));
+  EXPECT_TRUE(automatic.reached_end(0.9 + 0.1, 3));
+  EXPECT_TRUE(automatic.reached_end(1. - 1e-15, 3));
+  // A largest number of steps.
+  TimeStepControl::Settings limited{0.5, 0., 1., 3};
+  EXPECT_FALSE(TimeStepControl(limited).reached_end(0.5, 2));
+  EXPECT_TRUE(TimeStepControl(limited).reached_end(0.5, 3));
 
   // A fixed step within the limit dt_stable / Courant (0.6 here).
   TimeStepControl fixed({0.5, 0.5, 1.});

@@ -6,6 +6,7 @@
 
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/moving_wall.h>
+#include <fsgmpm/grid/wall_condition.h>
 
 #include <map>
 #include <memory>
@@ -15,30 +16,6 @@
 namespace fsgmpm
 {
   using namespace dealii;
-
-  /// The kind of wall a boundary id stands for.
-  enum class WallType
-  {
-    free,    ///< no constraint
-    fixed,   ///< all velocity components zero (no slip)
-    roller,  ///< normal velocity zero both ways, tangential free (bilateral)
-    slip,    ///< unilateral frictionless contact: may leave, never penetrate
-    friction ///< unilateral contact with Coulomb friction coefficient mu
-  };
-
-  struct WallCondition
-  {
-    WallType type     = WallType::free;
-    double   friction = 0.;
-  };
-
-  /**
-   * Parse "id: type[, id: type ...]" where type is free, fixed, roller,
-   * slip or "friction <mu>". Throws with a message naming @p parameter_path.
-   */
-  std::map<types::boundary_id, WallCondition>
-  parse_wall_conditions(const std::string &text,
-                        const std::string &parameter_path);
 
   /**
    * Velocity constraints of the nodes on walls. The outward normal of a wall

@@ -3,8 +3,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <fsgmpm/membrane/membrane.h>
-#include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/monitors.h>
 #include <fsgmpm/run/termination.h>
 
@@ -12,6 +10,12 @@
 
 namespace fsgmpm
 {
+  // Declared only: this header is read by every user of Parameters.
+  template <int dim>
+  class ParticleStore;
+  template <int dim>
+  class Membrane;
+
   /**
    * Dynamic relaxation's run control, for runs that seek a static state
    * (a geotube's shape): kinetic damping (all velocities zeroed at each

@@ -13,14 +13,16 @@ namespace fsgmpm
    * step's stages (MpmStep::stable_time_step, already scaled by the Courant
    * number), or Simulation/Fixed time step if one is set and stable, cut so
    * that the run lands on Simulation/End time. Keeps the current step and
-   * its extremes (summary.json dt_min, dt_max).
+   * its extremes (summary.json dt_min, dt_max), and says when the run has
+   * reached its end time or its largest number of steps.
    */
   class TimeStepControl
   {
   public:
     struct Settings
     {
-      /// Declare Simulation/End time, Courant number and Fixed time step.
+      /// Declare Simulation/End time, Maximum number of steps, Courant
+      /// number and Fixed time step.
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       /// Read them; throws if the end time is not positive or the Courant
@@ -28,9 +30,10 @@ namespace fsgmpm
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      double courant  = 0.5; ///< of MpmStep::stable_time_step
-      double fixed_dt = 0;   ///< 0: automatic
-      double end_time = 1;
+      double       courant   = 0.5; ///< of MpmStep::stable_time_step
+      double       fixed_dt  = 0;   ///< 0: automatic
+      double       end_time  = 1;
+      unsigned int max_steps = 0; ///< 0: no limit
     };
 
     explicit TimeStepControl(const Settings &settings);
@@ -43,6 +46,11 @@ namespace fsgmpm
      */
     std::string
     choose(const double dt_stable, const double time, const unsigned int step);
+
+    /// Whether a run at @p time after @p step steps has reached
+    /// Simulation/End time or Maximum number of steps.
+    bool
+    reached_end(const double time, const unsigned int step) const;
 
     /// The chosen step was taken, and it was the run's step number @p step
     /// (1 for the first): keeps dt_min() and dt_max().

@@ -4,8 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
-#include <fsgmpm/grid/boundary_conditions.h>
-#include <fsgmpm/grid/moving_wall.h>
+#include <fsgmpm/grid/moving_wall_parameters.h>
+#include <fsgmpm/grid/wall_condition.h>
 #include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/stability_guard.h>
 #include <fsgmpm/run/time_step_control.h>
@@ -38,7 +38,6 @@ namespace fsgmpm
     // Simulation
     /// End time, Courant number, fixed time step.
     TimeStepControl::Settings time_step;
-    unsigned int              max_steps;
     bool                      use_musl;
     bool                      use_apic;
     /// Velocity transfer = APIC affine remap: Stages::remap keeps the
