@@ -60,7 +60,28 @@ namespace
   std::string
   dam_break_scene()
   {
-    return R"(\nsubsection Simulation\n  set End time = 100\nend\nsubsection Grid\n  set Upper corner = 0.684, 0.285\n  set Subdivisions = 480, 200\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, 3: free\nend\nsubsection Bodies\n  subsection Body 0\n    set Material model = Newtonian fluid\n    set Initial stress = hydrostatic\n    set Box lower corner = 0, 0\n    set Box upper corner = 0.114, 0.228\n    set Particles per cell = 4\n    subsection Newtonian fluid\n      set Bulk modulus = 2.5e6\n    end\n  end\nend\n)";
+    return R"(
+subsection Simulation
+  set End time = 100
+end
+subsection Grid
+  set Upper corner = 0.684, 0.285
+  set Subdivisions = 480, 200
+  set Boundary conditions = 0: roller, 1: roller, 2: roller, 3: free
+end
+subsection Bodies
+  subsection Body 0
+    set Material model = Newtonian fluid
+    set Initial stress = hydrostatic
+    set Box lower corner = 0, 0
+    set Box upper corner = 0.114, 0.228
+    set Particles per cell = 4
+    subsection Newtonian fluid
+      set Bulk modulus = 2.5e6
+    end
+  end
+end
+)";
   }
 
   // The same water column in a tank of 10 times the area (sqrt(10) times
@@ -70,8 +91,12 @@ namespace
   std::string
   dam_break_scene_wide_tank()
   {
-    return dam_break_scene()
-           + R"(\nsubsection Grid\n  set Upper corner = 2.1630, 0.9013\n  set Subdivisions = 1518, 632\nend\n)";
+    return dam_break_scene() + R"(
+subsection Grid
+  set Upper corner = 2.1630, 0.9013
+  set Subdivisions = 1518, 632
+end
+)";
   }
 
   // The same dam break in 3D: a slab of 0.057 m depth with slip faces,
@@ -79,7 +104,30 @@ namespace
   std::string
   dam_break_scene_3d()
   {
-    return R"(\nsubsection Simulation\n  set Dimension = 3\n  set End time = 100\nend\nsubsection Grid\n  set Lower corner = 0, 0, 0\n  set Upper corner = 0.684, 0.285, 0.057\n  set Subdivisions = 120, 50, 10\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller\nend\nsubsection Bodies\n  subsection Body 0\n    set Material model = Newtonian fluid\n    set Initial stress = hydrostatic\n    set Box lower corner = 0, 0, 0\n    set Box upper corner = 0.114, 0.228, 0.057\n    set Particles per cell = 8\n    subsection Newtonian fluid\n      set Bulk modulus = 2.5e6\n    end\n  end\nend\n)";
+    return R"(
+subsection Simulation
+  set Dimension = 3
+  set End time = 100
+end
+subsection Grid
+  set Lower corner = 0, 0, 0
+  set Upper corner = 0.684, 0.285, 0.057
+  set Subdivisions = 120, 50, 10
+  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller
+end
+subsection Bodies
+  subsection Body 0
+    set Material model = Newtonian fluid
+    set Initial stress = hydrostatic
+    set Box lower corner = 0, 0, 0
+    set Box upper corner = 0.114, 0.228, 0.057
+    set Particles per cell = 8
+    subsection Newtonian fluid
+      set Bulk modulus = 2.5e6
+    end
+  end
+end
+)";
   }
 
   template <int dim>
@@ -88,8 +136,49 @@ namespace
   {
     // The block fills the lower 80% of the mesh; gravity makes it move.
     if (dim == 2)
-      return R"(\nsubsection Simulation\n  set Dimension = 2\n  set End time = 100\nend\nsubsection Grid\n  set Upper corner = 1.6, 1.0\n  set Subdivisions = 160, 100\n  set Boundary conditions = 0: roller, 1: roller, 2: roller\nend\nsubsection Bodies\n  subsection Body 0\n    set Box lower corner = 0, 0\n    set Box upper corner = 1.6, 0.8\n    set Particles per cell = 4\n    subsection Linear elastic\n      set Young's modulus = 1e6\n    end\n  end\nend\n)";
-    return R"(\nsubsection Simulation\n  set Dimension = 3\n  set End time = 100\nend\nsubsection Grid\n  set Lower corner = 0, 0, 0\n  set Upper corner = 1.2, 1.0, 0.6\n  set Subdivisions = 24, 20, 12\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller\nend\nsubsection Bodies\n  subsection Body 0\n    set Box lower corner = 0, 0, 0\n    set Box upper corner = 1.2, 0.8, 0.6\n    set Particles per cell = 8\n    subsection Linear elastic\n      set Young's modulus = 1e6\n    end\n  end\nend\n)";
+      return R"(
+subsection Simulation
+  set Dimension = 2
+  set End time = 100
+end
+subsection Grid
+  set Upper corner = 1.6, 1.0
+  set Subdivisions = 160, 100
+  set Boundary conditions = 0: roller, 1: roller, 2: roller
+end
+subsection Bodies
+  subsection Body 0
+    set Box lower corner = 0, 0
+    set Box upper corner = 1.6, 0.8
+    set Particles per cell = 4
+    subsection Linear elastic
+      set Young's modulus = 1e6
+    end
+  end
+end
+)";
+    return R"(
+subsection Simulation
+  set Dimension = 3
+  set End time = 100
+end
+subsection Grid
+  set Lower corner = 0, 0, 0
+  set Upper corner = 1.2, 1.0, 0.6
+  set Subdivisions = 24, 20, 12
+  set Boundary conditions = 0: roller, 1: roller, 2: roller, 4: roller, 5: roller
+end
+subsection Bodies
+  subsection Body 0
+    set Box lower corner = 0, 0, 0
+    set Box upper corner = 1.2, 0.8, 0.6
+    set Particles per cell = 8
+    subsection Linear elastic
+      set Young's modulus = 1e6
+    end
+  end
+end
+)";
   }
 
   /**
