@@ -177,32 +177,47 @@ namespace fsgmpm
   void
   BackgroundGrid<dim>::compute_colouring()
   {
-    // Greedy colouring of the cell-node-cell graph, in cell order so that the
-    // result is deterministic.
-    std::vector<std::vector<unsigned int>> node_cells(n_nodes());
+    // Blocks of consecutive cells: colouring single cells sent a scatter
+    // across the whole domain once per colour, missing the cache at every
+    // cell (p2g 2.4 times slower in the 3D dam break); a block's cells are
+    // neighbours. 16 to 128 cells measured alike.
+    const unsigned int cells_per_block = 32;
+    const unsigned int n_blocks
+      = (n_cells() + cells_per_block - 1) / cells_per_block;
+    cell_block.resize(n_cells());
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      cell_block[c] = c / cells_per_block;
+
+    // Greedy colouring of the block-node-block graph, in block order so that
+    // the result is deterministic.
+    std::vector<std::vector<unsigned int>> node_blocks(n_nodes());
     for (unsigned int c = 0; c < n_cells(); ++c)
       for (const unsigned int node : cell_nodes[c])
-        node_cells[node].push_back(c);
+        if (node_blocks[node].empty()
+            || node_blocks[node].back() != cell_block[c])
+          node_blocks[node].push_back(cell_block[c]);
 
-    cell_colour.assign(n_cells(), invalid);
+    block_colour.assign(n_blocks, invalid);
+    n_colours = 0;
     std::vector<unsigned int> used_stamp;
-    for (unsigned int c = 0; c < n_cells(); ++c)
+    for (unsigned int b = 0; b < n_blocks; ++b)
       {
-        for (const unsigned int node : cell_nodes[c])
-          for (const unsigned int other : node_cells[node])
-            if (cell_colour[other] != invalid)
-              {
-                if (cell_colour[other] >= used_stamp.size())
-                  used_stamp.resize(cell_colour[other] + 1, invalid);
-                used_stamp[cell_colour[other]] = c;
-              }
+        for (unsigned int c = b * cells_per_block;
+             c < std::min(n_cells(), (b + 1) * cells_per_block);
+             ++c)
+          for (const unsigned int node : cell_nodes[c])
+            for (const unsigned int other : node_blocks[node])
+              if (block_colour[other] != invalid)
+                {
+                  if (block_colour[other] >= used_stamp.size())
+                    used_stamp.resize(block_colour[other] + 1, invalid);
+                  used_stamp[block_colour[other]] = b;
+                }
         unsigned int colour = 0;
-        while (colour < used_stamp.size() && used_stamp[colour] == c)
+        while (colour < used_stamp.size() && used_stamp[colour] == b)
           ++colour;
-        cell_colour[c] = colour;
-        if (colour >= colours.size())
-          colours.resize(colour + 1);
-        colours[colour].push_back(c);
+        block_colour[b] = colour;
+        n_colours       = std::max(n_colours, colour + 1);
       }
   }
 
@@ -234,10 +249,10 @@ namespace fsgmpm
   {
     AssertThrow(n_fields == 1 && n >= 1,
                 ExcMessage("The velocity fields of a grid are set once."));
-    const unsigned int nc = n_cells(), nn = n_nodes(),
-                       n_colours = colours.size();
-    n_fields                     = n;
-    auto replicate               = [&](auto &v) {
+    const unsigned int nc = n_cells(), nn = n_nodes(), nb = block_colour.size(),
+                       nk = n_colours;
+    n_fields              = n;
+    auto replicate        = [&](auto &v) {
       const auto base = v;
       v.reserve(n * base.size());
       for (unsigned int f = 1; f < n; ++f)
@@ -253,8 +268,9 @@ namespace fsgmpm
     replicate(face_boundary_id);
     replicate(cell_nodes);
     replicate(cell_neighbors);
-    replicate(cell_colour);
-    colours.resize(n * n_colours);
+    replicate(cell_block);
+    replicate(block_colour);
+    n_colours = n * nk;
     for (unsigned int f = 1; f < n; ++f)
       for (unsigned int c = f * nc; c < (f + 1) * nc; ++c)
         {
@@ -263,9 +279,11 @@ namespace fsgmpm
           for (auto &neighbor : cell_neighbors[c])
             if (neighbor != invalid)
               neighbor += f * nc;
-          cell_colour[c] += f * n_colours;
-          colours[cell_colour[c]].push_back(c);
+          cell_block[c] += f * nb;
         }
+    for (unsigned int f = 1; f < n; ++f)
+      for (unsigned int b = f * nb; b < (f + 1) * nb; ++b)
+        block_colour[b] += f * nk;
   }
 
 

@@ -185,12 +185,16 @@ namespace fsgmpm
     /// meaningful where cell_neighbors is invalid).
     std::vector<std::array<types::boundary_id, dim + 1>> face_boundary_id;
 
-    /// Cells grouped into colours such that no two cells of one colour share
-    /// a node: scatters within one colour can run in parallel without races,
-    /// and the summation order (hence the result) does not depend on the
-    /// number of threads.
-    std::vector<std::vector<unsigned int>> colours;
-    std::vector<unsigned int>              cell_colour;
+    /// Cells in blocks of consecutive numbers (a box mesh numbers its cells
+    /// row by row, so a block is a compact strip), and the blocks in colours
+    /// such that no two blocks of one colour share a node. Scatters run the
+    /// blocks of one colour in parallel without races, each block's cells in
+    /// order: the summation order (hence the result) does not depend on the
+    /// number of threads, and a block's points and nodes stay in cache.
+    /// Block numbers grow with the cell number.
+    std::vector<unsigned int> cell_block;
+    std::vector<unsigned int> block_colour;
+    unsigned int              n_colours = 0;
 
   private:
     unsigned int       n_fields = 1;

@@ -25,10 +25,12 @@ namespace fsgmpm
     }
 
     /**
-     * Call f(cell) for every occupied cell, colour by colour, in parallel
-     * within a colour. No two cells of a colour share a node, so f may add
-     * to the nodes of its cell without locks, and every node receives its
-     * contributions in the same order whatever the number of threads.
+     * Call f(cell) for every occupied cell, colour by colour, the blocks of
+     * a colour in parallel, the cells of a block in order
+     * (BackgroundGrid::cell_block). No two blocks of a colour share a node,
+     * so f may add to the nodes of its cell without locks, and every node
+     * receives its contributions in the same order whatever the number of
+     * threads.
      */
     template <int dim, typename Function>
     void
@@ -36,20 +38,34 @@ namespace fsgmpm
                       const ParticleStore<dim>  &particles,
                       const Function            &f)
     {
-      thread_local std::vector<std::vector<unsigned int>> by_colour;
-      by_colour.resize(grid.colours.size());
+      // Per colour, the ranges of occupied_cells that are one block each
+      // (the occupied cells ascend, and so do their blocks).
+      thread_local std::vector<std::vector<std::array<unsigned int, 2>>>
+        by_colour;
+      by_colour.resize(grid.n_colours);
       for (auto &v : by_colour)
         v.clear();
-      for (const unsigned int c : particles.occupied_cells)
-        by_colour[grid.cell_colour[c]].push_back(c);
-      for (const auto &cells : by_colour)
+      const auto &cells = particles.occupied_cells;
+      for (unsigned int i = 0; i < cells.size();)
+        {
+          const unsigned int block = grid.cell_block[cells[i]];
+          unsigned int       j     = i + 1;
+          while (j < cells.size() && grid.cell_block[cells[j]] == block)
+            ++j;
+          Assert(j == cells.size() || grid.cell_block[cells[j]] > block,
+                 ExcMessage("The occupied cells must ascend."));
+          by_colour[grid.block_colour[block]].push_back({{i, j}});
+          i = j;
+        }
+      for (const auto &ranges : by_colour)
         parallel_range(
-          cells.size(),
+          ranges.size(),
           [&](const unsigned int b, const unsigned int e) {
-            for (unsigned int i = b; i < e; ++i)
-              f(cells[i]);
+            for (unsigned int r = b; r < e; ++r)
+              for (unsigned int i = ranges[r][0]; i < ranges[r][1]; ++i)
+                f(cells[i]);
           },
-          16);
+          1);
     }
 
     /// The points' volumes of cell @p c shared to its dim + 1 nodes,
