@@ -13,9 +13,9 @@ namespace fsgmpm
 
   /**
    * Input of a rigid plane wall with a prescribed velocity history: the gate
-   * of a dam-break experiment, lifted while the column collapses. Declared
-   * and parsed here, so the component owns its subsection
-   * ("Moving wall").
+   * of a dam-break experiment, lifted while the column collapses. It
+   * declares and parses its own subsection ("Moving wall"; moving_wall.cc),
+   * and this light header is all that Parameters needs of the wall.
    */
   struct MovingWallParameters
   {

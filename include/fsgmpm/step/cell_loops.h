@@ -52,8 +52,12 @@ namespace fsgmpm
           unsigned int       j     = i + 1;
           while (j < cells.size() && grid.cell_block[cells[j]] == block)
             ++j;
-          Assert(j == cells.size() || grid.cell_block[cells[j]] > block,
-                 ExcMessage("The occupied cells must ascend."));
+          // A block met twice would run twice in one colour, in parallel
+          // with itself: a race. sort_by_cell() sorts; one comparison per
+          // block keeps a program that fills occupied_cells itself honest.
+          AssertThrow(j == cells.size() || grid.cell_block[cells[j]] > block,
+                      ExcMessage("ParticleStore::occupied_cells must ascend "
+                                 "(call sort_by_cell())."));
           by_colour[grid.block_colour[block]].push_back({{i, j}});
           i = j;
         }
