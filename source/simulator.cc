@@ -5,6 +5,7 @@
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
+#include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/run/energy_balance.h>
@@ -21,6 +22,7 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace fsgmpm
 {
@@ -28,12 +30,14 @@ namespace fsgmpm
   {
     /// The run-control stages timed besides MpmStep's.
     const std::vector<std::string> run_stage_names
-      = {"monitors", "kinetic_damping", "output"};
+      = {"monitors", "kinetic_damping", "output", "mpi_points"};
     enum RunStage : unsigned int
     {
       monitor_stage,
       kinetic_damping_stage,
-      output_stage
+      output_stage,
+      /// MPI: sending ghost copies, migrating and rebalancing points.
+      mpi_points_stage
     };
 
     template <int dim>
@@ -159,6 +163,9 @@ namespace fsgmpm
                        : grid->max_altitude_global;
     setup_membrane(prm, cell_size);
     setup_bodies();
+    scene_monitors = std::make_unique<SceneMonitors<dim>>(
+      prm, grid->lower_corner, cell_size, bodies.size(), membrane != nullptr);
+    setup_partition();
     smoothing.resize(materials.size(), grid->n_nodes(), grid->n_cells());
     mpm_step = std::make_unique<MpmStep<dim>>(*grid,
                                               *constraints,
@@ -170,11 +177,107 @@ namespace fsgmpm
                                               smoothing);
     if (membrane)
       mpm_step->attach_membrane(*membrane, membrane_split_length);
-
-    scene_monitors = std::make_unique<SceneMonitors<dim>>(
-      prm, grid->lower_corner, cell_size, bodies.size(), membrane != nullptr);
+    if (partition)
+      mpm_step->attach_partition(*partition);
 
     reinitialize_state();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_partition()
+  {
+    if (!Utilities::MPI::job_supports_mpi()
+        || Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+      return;
+    root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    const std::string n_ranks
+      = std::to_string(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    auto refuse = [&](const bool ok, const std::string &what) {
+      AssertThrow(ok,
+                  ExcMessage(what
+                             + " does not run on more than one MPI "
+                               "process yet (this run has "
+                             + n_ranks + "); run it with one process."));
+    };
+    refuse(!membrane, "A membrane (Membrane/Enabled)");
+    refuse(params.checkpoint_interval == 0,
+           "Checkpointing (Output/Checkpoint interval > 0)");
+    refuse(params.local_damping == 0,
+           "Local damping (Damping/Local damping coefficient > 0)");
+    refuse(params.stress_integration
+             != Stages::StressIntegration::nodal_projection,
+           "Simulation/Stress integration = nodal projection");
+    refuse(!params.write_grid, "Grid output (Output/Write grid = true)");
+    refuse(params.output_format != "hdf5",
+           "HDF5 output (Output/Format = hdf5)");
+    const std::string others = scene_monitors->not_maxima();
+    refuse(others.empty(), "The scene monitor(s) " + others);
+
+    partition = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
+    // Every process filled the same bodies: the counts are global.
+    std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
+    for (const unsigned int c : particles.occupied_cells)
+      points_per_cell[c] = particles.cell_end[c] - particles.cell_begin[c];
+    partition->partition(points_per_cell);
+    DistributedPoints::keep_owned(*partition, particles);
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  Simulator<dim>::count_free_surface() const
+  {
+    std::pair<unsigned int, unsigned int> n = {0, 0};
+    for (unsigned int p = 0; p < particles.size(); ++p)
+      if (material_options[particles.material_id[p]].detect_free_surface
+          && (particles.ghost.empty() || !particles.ghost[p]))
+        {
+          n.first += particles.free_surface[p];
+          ++n.second;
+        }
+    const MPI_Comm &comm = partition->get_communicator();
+    return {Utilities::MPI::sum(n.first, comm),
+            Utilities::MPI::sum(n.second, comm)};
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::n_global_particles() const
+  {
+    return partition ? DistributedPoints::global_size(*partition, particles)
+                     : particles.size();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::rebalance()
+  {
+    const MPI_Comm &comm    = partition->get_communicator();
+    const double    n_local = particles.size();
+    const double    n_mean
+      = Utilities::MPI::sum(n_local, comm) / partition->n_ranks();
+    imbalance = n_mean > 0 ? Utilities::MPI::max(n_local, comm) / n_mean : 1.;
+    if (params.repartition_imbalance == 0
+        || imbalance <= params.repartition_imbalance)
+      return;
+    std::vector<unsigned int> local(grid->n_cells(), 0),
+      points_per_cell(grid->n_cells(), 0);
+    for (const unsigned int c : particles.occupied_cells)
+      local[c] = particles.cell_end[c] - particles.cell_begin[c];
+    Utilities::MPI::sum(make_array_view(std::as_const(local)),
+                        comm,
+                        make_array_view(points_per_cell));
+    partition->partition(points_per_cell);
+    DistributedPoints::migrate(*partition, particles);
+    ++n_repartitions;
   }
 
 
@@ -184,16 +287,29 @@ namespace fsgmpm
   Simulator<dim>::reinitialize_state()
   {
     particles.sort_by_cell(grid->n_cells());
+    if (partition)
+      DistributedPoints::add_ghosts(*partition, particles);
     Stages::p2g(*grid, particles, nodes, params.stress_integration);
     if (membrane)
       mpm_step->get_membrane_coupling()->p2g(nodes);
     set_free_surface_fraction(Stages::detect_free_surface(
-      *grid, nodes, material_options, smoothing, particles));
+      *grid, nodes, material_options, smoothing, particles, [this]() {
+        mpm_step->synchronise_free_surface();
+      }));
+    if (partition)
+      {
+        // Drops the ghosts (no point moved).
+        DistributedPoints::migrate(*partition, particles);
+        set_free_surface_fraction(count_free_surface());
+      }
     compute_monitors();
-    relaxation.reset(monitors,
-                     EnergyBalance::potential_energy_above(particles,
-                                                           params.gravity,
-                                                           grid->lower_corner));
+    double potential
+      = EnergyBalance::potential_energy_above(particles,
+                                              params.gravity,
+                                              grid->lower_corner);
+    if (partition)
+      potential = Utilities::MPI::sum(potential, partition->get_communicator());
+    relaxation.reset(monitors, potential);
     stability_guard.reset(monitors);
   }
 
@@ -415,6 +531,19 @@ namespace fsgmpm
   {
     EnergyBalance::compute_energies(
       particles, materials, membrane.get(), params.gravity, monitors);
+    if (partition)
+      {
+        // Sums over the processes: these energies may differ from a serial
+        // run's in the last bits (another order of the sum), but they do
+        // not feed back into the motion.
+        const MPI_Comm &comm = partition->get_communicator();
+        monitors.kinetic_energy
+          = Utilities::MPI::sum(monitors.kinetic_energy, comm);
+        monitors.strain_energy
+          = Utilities::MPI::sum(monitors.strain_energy, comm);
+        monitors.potential_energy
+          = Utilities::MPI::sum(monitors.potential_energy, comm);
+      }
   }
 
 
@@ -475,7 +604,8 @@ namespace fsgmpm
         += std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
-    if (particles.size() == 0)
+    const unsigned int n_before = n_global_particles();
+    if (n_before == 0)
       {
         termination = Termination::error;
         diagnosis   = "no material point is left in the mesh (all "
@@ -485,11 +615,23 @@ namespace fsgmpm
         return false;
       }
 
+    if (partition)
+      timed(mpi_points_stage, [&] {
+        const unsigned int n_owned = particles.size();
+        DistributedPoints::add_ghosts(*partition, particles);
+        halo_fraction
+          = Utilities::MPI::max(n_owned > 0
+                                  ? double(particles.size() - n_owned) / n_owned
+                                  : 0.,
+                                partition->get_communicator());
+      });
     // P2G first: the membrane's nodal time-step bound needs the nodal
     // masses (p2g does not depend on dt).
     mpm_step->transfer_to_grid();
-    const std::string problem
-      = time_step_control.choose(mpm_step->stable_time_step(), time, step);
+    double dt_stable = mpm_step->stable_time_step();
+    if (partition)
+      dt_stable = Utilities::MPI::min(dt_stable, partition->get_communicator());
+    const std::string problem = time_step_control.choose(dt_stable, time, step);
     if (!problem.empty())
       {
         termination = Termination::unstable;
@@ -498,8 +640,29 @@ namespace fsgmpm
       }
     const double dt = time_step_control.dt();
 
-    const typename MpmStep<dim>::Result result
+    typename MpmStep<dim>::Result result
       = mpm_step->advance(dt, time + dt, current_gravity());
+    if (partition)
+      {
+        timed(mpi_points_stage,
+              [&] { DistributedPoints::migrate(*partition, particles); });
+        const MPI_Comm &comm  = partition->get_communicator();
+        result.lost_particles = n_before - n_global_particles();
+        result.free_surface   = count_free_surface();
+        result.displacement_ratio
+          = Utilities::MPI::max(std::isfinite(result.displacement_ratio)
+                                  ? result.displacement_ratio
+                                  : std::numeric_limits<double>::infinity(),
+                                comm);
+        Stages::GridUpdateResult &g = result.grid;
+        g.external_work_increment
+          = Utilities::MPI::sum(g.external_work_increment, comm);
+        g.damping_work_increment
+          = Utilities::MPI::sum(g.damping_work_increment, comm);
+        g.unbalanced_norm_sq = Utilities::MPI::sum(g.unbalanced_norm_sq, comm);
+        g.external_norm_sq   = Utilities::MPI::sum(g.external_norm_sq, comm);
+        timed(mpi_points_stage, [&] { rebalance(); });
+      }
     set_free_surface_fraction(result.free_surface);
     if (result.membrane_nodes_outside > 0)
       {
@@ -511,7 +674,8 @@ namespace fsgmpm
         return false;
       }
 
-    particle_updates += particles.size();
+    particle_updates
+      += partition ? n_before - result.lost_particles : particles.size();
     time += dt;
     ++step;
     time_step_control.record_step(step);
@@ -519,10 +683,8 @@ namespace fsgmpm
     bool ok = true;
     timed(monitor_stage, [&] {
       compute_monitors();
-      EnergyBalance::add_step(result.grid,
-                              result.lost_particles,
-                              nodes,
-                              monitors);
+      EnergyBalance::add_step(
+        result.grid, result.lost_particles, nodes, monitors, partition.get());
     });
     timed(kinetic_damping_stage, [&] {
       relaxation.apply_kinetic_damping(monitors, particles, membrane.get());
@@ -557,12 +719,16 @@ namespace fsgmpm
     using Clock       = std::chrono::steady_clock;
     const auto  start = Clock::now();
     const auto &dir   = params.output_directory;
-    fs::create_directories(dir);
-    fs::remove(fs::path(dir) / "summary.json");
-    if (!resumed)
+    // With MPI, rank 0 writes every file (the others send it their points).
+    if (root)
       {
-        fs::remove(fs::path(dir) / "monitors.csv");
-        fs::remove_all(fs::path(dir) / "checkpoints");
+        fs::create_directories(dir);
+        fs::remove(fs::path(dir) / "summary.json");
+        if (!resumed)
+          {
+            fs::remove(fs::path(dir) / "monitors.csv");
+            fs::remove_all(fs::path(dir) / "checkpoints");
+          }
       }
 
     output = std::make_unique<RunOutput<dim>>(
@@ -572,9 +738,10 @@ namespace fsgmpm
                                           == "finite elements",
                                         params.write_particles,
                                         params.write_grid});
-    if (!resumed)
+    if (!resumed && root)
       output->remove_previous_output();
-    fs::remove(fs::path(dir) / "membrane_shape.csv");
+    if (root)
+      fs::remove(fs::path(dir) / "membrane_shape.csv");
     // Common columns (SPEC 6), the free-surface fraction where a body
     // detects free surfaces, then the scene's own columns.
     bool detecting = false;
@@ -596,26 +763,51 @@ namespace fsgmpm
       columns.push_back("free_surface_fraction");
     for (const auto &name : scene_monitors->names())
       columns.push_back(name);
-    monitor_file
-      = resumed ? std::make_unique<MonitorFile>(dir + "/monitors.csv",
-                                                columns,
-                                                resume_monitor_bytes)
-                : std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
+    if (root)
+      monitor_file
+        = resumed
+            ? std::make_unique<MonitorFile>(dir + "/monitors.csv",
+                                            columns,
+                                            resume_monitor_bytes)
+            : std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
     auto write_monitor_row = [&] {
       // The common columns; the free-surface fraction (the last value)
       // only where a body detects free surfaces.
       const auto          values = monitors.values();
       std::vector<double> row    = {time, double(step), time_step_control.dt()};
       row.insert(row.end(), values.begin(), values.end() - (detecting ? 0 : 1));
-      for (const double v : scene_monitors->evaluate(particles, membrane.get()))
-        row.push_back(v);
-      monitor_file->write_row(row);
+      std::vector<double> scene
+        = scene_monitors->evaluate(particles, membrane.get());
+      if (partition)
+        {
+          const std::vector<double> local = scene;
+          Utilities::MPI::max(make_array_view(local),
+                              partition->get_communicator(),
+                              make_array_view(scene));
+        }
+      row.insert(row.end(), scene.begin(), scene.end());
+      if (root)
+        monitor_file->write_row(row);
     };
     const bool any_output
       = (params.write_particles || params.write_grid || membrane)
         && output_schedule.active();
-    auto write_output
-      = [&] { output->write(time, particles, *grid, nodes, membrane.get()); };
+    ParticleStore<dim> all_particles;
+    auto               write_output = [&] {
+      if (!partition)
+        output->write(time, particles, *grid, nodes, membrane.get());
+      else
+        {
+          DistributedPoints::gather_on_root(*partition,
+                                            particles,
+                                            all_particles);
+          // The vorticity needs the nodal velocities, which rank 0 has
+          // only around its own cells: not written (zero) in MPI runs.
+          if (root)
+            output->write(
+              time, all_particles, *grid, nodes, membrane.get(), false);
+        }
+    };
     if (resumed)
       output->restore(resume_output);
     else
@@ -626,11 +818,18 @@ namespace fsgmpm
       }
     const double start_time = time;
 
-    if (!params.quiet)
-      std::cout << "fsgmpm: " << dim << "D, " << particles.size()
-                << " material points, " << grid->n_cells() << " cells, "
-                << MultithreadInfo::n_threads() << " threads, "
-                << (params.use_musl ? "MUSL" : "USL") << std::endl;
+    const bool verbose = !params.quiet && root;
+    {
+      const unsigned int n_points = n_global_particles();
+      if (verbose)
+        std::cout << "fsgmpm: " << dim << "D, " << n_points
+                  << " material points, " << grid->n_cells() << " cells, "
+                  << MultithreadInfo::n_threads() << " threads"
+                  << (partition ? " x " + std::to_string(partition->n_ranks())
+                                    + " MPI processes"
+                                : std::string())
+                  << ", " << (params.use_musl ? "MUSL" : "USL") << std::endl;
+    }
 
     auto last_progress = Clock::now();
     bool running       = true;
@@ -657,7 +856,7 @@ namespace fsgmpm
               std::chrono::duration<double>(Clock::now() - start).count());
             checkpoint_schedule.written(time, step);
           }
-        if (!params.quiet
+        if (verbose
             && std::chrono::duration<double>(Clock::now() - last_progress)
                    .count()
                  > 2.)
@@ -686,7 +885,7 @@ namespace fsgmpm
     if (membrane)
       write_membrane_shape_csv(*membrane, dir + "/membrane_shape.csv");
     write_summary(wall);
-    if (!params.quiet)
+    if (verbose)
       {
         std::cout << "fsgmpm: " << termination << " after " << step
                   << " steps, simulated " << std::setprecision(6) << time
@@ -695,8 +894,9 @@ namespace fsgmpm
                   << " particle-updates/s, " << monitors.lost_particles
                   << " lost particles; output in " << dir << "/" << std::endl;
       }
-    if (termination == Termination::unstable
-        || termination == Termination::error)
+    if (root
+        && (termination == Termination::unstable
+            || termination == Termination::error))
       std::cerr << "fsgmpm: " << diagnosis << std::endl;
     return termination;
   }
@@ -707,6 +907,12 @@ namespace fsgmpm
   void
   Simulator<dim>::write_summary(const double wall) const
   {
+    const unsigned int n_points = n_global_particles();
+    double             bytes    = particles.bytes_per_particle();
+    if (partition)
+      bytes = Utilities::MPI::max(bytes, partition->get_communicator());
+    if (!root)
+      return;
     std::string               stages  = "{";
     const std::vector<double> seconds = get_stage_seconds();
     for (unsigned int s = 0; s < seconds.size(); ++s)
@@ -715,20 +921,23 @@ namespace fsgmpm
     stages += "}";
     std::vector<std::pair<std::string, std::string>> entries
       = {{"dim", std::to_string(dim)},
-         {"particles", std::to_string(particles.size())},
+         {"particles", std::to_string(n_points)},
          {"steps", std::to_string(step)},
          {"simulated_time", json_number(time)},
          {"wall_seconds", json_number(wall)},
          {"particle_updates_per_second", json_number(particle_updates / wall)},
          {"stage_seconds", stages},
          {"threads", std::to_string(MultithreadInfo::n_threads())},
-         {"mpi_ranks", "1"},
+         {"mpi_ranks", std::to_string(partition ? partition->n_ranks() : 1)},
+         {"mpi_repartitions", std::to_string(n_repartitions)},
+         {"mpi_imbalance", json_number(imbalance)},
+         {"mpi_halo_fraction", json_number(halo_fraction)},
          {"lost_particles", std::to_string(monitors.lost_particles)},
          {"dt_min", json_number(time_step_control.dt_min())},
          {"dt_max", json_number(time_step_control.dt_max())},
          {"termination", json_string(to_string(termination))},
          {"diagnosis", json_string(diagnosis)},
-         {"bytes_per_particle", json_number(particles.bytes_per_particle())},
+         {"bytes_per_particle", json_number(bytes)},
          {"checkpoint_seconds", json_number(checkpoint_seconds)},
          {"version", json_string(FSGMPM_VERSION)}};
     write_json(params.output_directory + "/summary.json", entries);

@@ -272,6 +272,9 @@ namespace fsgmpm
   void
   Simulator<dim>::restart(const std::string &directory)
   {
+    AssertThrow(!partition,
+                ExcMessage("--restart does not run on more than one MPI "
+                           "process yet; restart with one process."));
     const fs::path dir   = fs::path(directory) / "checkpoints";
     const auto     files = checkpoint_files(dir);
     AssertThrow(!files.empty(),

@@ -10,6 +10,7 @@
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/monitors/scene_monitors.h>
+#include <fsgmpm/parallel/domain_partition.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/monitors.h>
@@ -241,6 +242,22 @@ namespace fsgmpm
     load_checkpoint(const CheckpointReader &in);
     Tensor<1, dim>
     current_gravity() const;
+    /// MPI: split the cells over the processes (weighted by the points)
+    /// and keep this process's points; refuses what is not distributed yet.
+    void
+    setup_partition();
+    /// (flagged, detecting) free-surface points over all processes, counted
+    /// on the points each process owns.
+    std::pair<unsigned int, unsigned int>
+    count_free_surface() const;
+    /// The number of points over all processes.
+    unsigned int
+    n_global_particles() const;
+    /// MPI: split the cells again if the points are out of balance
+    /// (Simulation/Repartition imbalance) and move the points to their new
+    /// owners. Between steps (no ghosts held).
+    void
+    rebalance();
 
     Parameters<dim>                        params;
     std::vector<BodyDescription<dim>>      bodies;
@@ -270,6 +287,15 @@ namespace fsgmpm
     StabilityGuard    stability_guard;
 
     std::unique_ptr<MpmStep<dim>> mpm_step;
+    /// MPI runs with more than one process: who owns which cell (null in
+    /// serial). Rank 0 writes the files.
+    std::unique_ptr<DomainPartition<dim>> partition;
+    bool                                  root = true;
+    /// MPI statistics for summary.json: repartitions so far, the ghost
+    /// points of the last step (largest ratio to the owned points over the
+    /// processes) and the last max/mean points per process.
+    unsigned int n_repartitions = 0;
+    double       halo_fraction = 0, imbalance = 1;
     /// Wall seconds of the run-control stages, and of all stages before a
     /// restart (from the checkpoint).
     std::vector<double>             run_stage_seconds, restored_stage_seconds;

@@ -9,6 +9,7 @@
  */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
@@ -19,9 +20,11 @@
 
 #include <boost/property_tree/ptree.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -120,9 +123,43 @@ namespace
 
 
 
+/// True if mpirun/mpiexec (Open MPI, MPICH, Intel MPI) or srun (PMI, PMIx)
+/// started this process.
+bool
+started_by_mpi_launcher()
+{
+  for (const char *name :
+       {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"})
+    if (std::getenv(name) != nullptr)
+      return true;
+  return false;
+}
+
+
+
+/// After an error: with several MPI processes the others may wait in a
+/// collective call for this one, so the whole job is stopped.
+int
+error_exit()
+{
+  if (dealii::Utilities::MPI::job_supports_mpi()
+      && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  return 1;
+}
+
+
+
 int
 main(int argc, char **argv)
 {
+  // MPI only when started by an MPI launcher: a singleton MPI_Init starts
+  // a daemon and costs more than a second per run. The threads of the
+  // processes share the cores of the machine.
+  std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+  if (started_by_mpi_launcher())
+    mpi
+      = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv);
   try
     {
       std::string              prm_file;
@@ -209,16 +246,16 @@ main(int argc, char **argv)
       e.print_info(info);
       std::cerr << "fsgmpm: error: " << dealii::Utilities::trim(info.str())
                 << std::endl;
-      return 1;
+      return error_exit();
     }
   catch (std::exception &e)
     {
       std::cerr << "fsgmpm: error: " << e.what() << std::endl;
-      return 1;
+      return error_exit();
     }
   catch (...)
     {
       std::cerr << "fsgmpm: error: unknown exception" << std::endl;
-      return 1;
+      return error_exit();
     }
 }

@@ -39,12 +39,15 @@ namespace fsgmpm
                         const ParticleStore<dim>  &particles,
                         const BackgroundGrid<dim> &grid,
                         const NodalFields<dim>    &nodes,
-                        const Membrane<dim>       *membrane)
+                        const Membrane<dim>       *membrane,
+                        const bool                 nodal_fields)
   {
     const std::string &dir = settings.directory;
     if (settings.write_particles)
       {
-        particle_output.build_patches(particles, &grid, &nodes);
+        particle_output.build_patches(particles,
+                                      &grid,
+                                      nodal_fields ? &nodes : nullptr);
         if (settings.hdf5)
           particle_output.write_xdmf(particle_xdmf, time);
         else

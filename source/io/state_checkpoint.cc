@@ -1,5 +1,7 @@
 #include <fsgmpm/io/state_checkpoint.h>
 
+#include <algorithm>
+
 namespace fsgmpm
 {
   namespace StateCheckpoint
@@ -20,6 +22,7 @@ namespace fsgmpm
       out.put_integers("particles/material_id", p.material_id);
       out.put_integers("particles/body_id", p.body_id);
       out.put_integers("particles/free_surface", p.free_surface);
+      out.put("particles/id", p.id);
     }
 
 
@@ -44,6 +47,7 @@ namespace fsgmpm
       p.material_id      = in.integers<std::uint16_t>("particles/material_id");
       p.body_id          = in.integers<std::uint16_t>("particles/body_id");
       p.free_surface     = in.integers<std::uint8_t>("particles/free_surface");
+      p.id               = in.uints("particles/id");
       const unsigned int n = p.position.size();
       for (const std::size_t size : {p.velocity.size(),
                                      p.stress.size(),
@@ -53,7 +57,8 @@ namespace fsgmpm
                                      p.cell.size(),
                                      p.material_id.size(),
                                      p.body_id.size(),
-                                     p.free_surface.size()})
+                                     p.free_surface.size(),
+                                     p.id.size()})
         AssertThrow(size == n,
                     ExcMessage("The checkpoint's point arrays differ in "
                                "length: it is damaged."));
@@ -65,9 +70,11 @@ namespace fsgmpm
                     ExcMessage("The checkpoint names cell " + std::to_string(c)
                                + ", but the mesh has " + std::to_string(n_cells)
                                + " cells: it was written for another mesh."));
-      // The points were stored sorted by cell (relocate sorts them after
-      // every step); the stable sort keeps their order and rebuilds the
-      // per-cell index.
+      p.next_id = 0;
+      for (const unsigned int i : p.id)
+        p.next_id = std::max(p.next_id, i + 1);
+      // The points were stored in the canonical order (by cell, then id);
+      // the sort only rebuilds the per-cell index.
       p.sort_by_cell(n_cells);
     }
 

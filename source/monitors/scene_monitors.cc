@@ -117,6 +117,19 @@ namespace fsgmpm
 
 
   template <int dim>
+  std::string
+  SceneMonitors<dim>::not_maxima() const
+  {
+    std::string names;
+    for (const auto &m : monitors)
+      if (!m.second->values_are_maxima())
+        names += (names.empty() ? "" : ", ") + m.first;
+    return names;
+  }
+
+
+
+  template <int dim>
   bool
   SceneMonitors<dim>::needs_membrane() const
   {

@@ -26,6 +26,9 @@ namespace fsgmpm
     material_id.push_back(material);
     body_id.push_back(body);
     free_surface.push_back(0);
+    id.push_back(next_id++);
+    if (!ghost.empty())
+      ghost.push_back(0);
     if (with_affine_velocity)
       affine_velocity.emplace_back();
   }
@@ -78,7 +81,9 @@ namespace fsgmpm
       {
         if (cell_end[cell[p]]++ == 0)
           occupied_cells.push_back(cell[p]);
-        sorted = sorted && (p == 0 || cell[p - 1] <= cell[p]);
+        sorted = sorted
+                 && (p == 0 || cell[p - 1] < cell[p]
+                     || (cell[p - 1] == cell[p] && id[p - 1] < id[p]));
       }
     // Met in point order: ascending already when the points are sorted.
     if (!sorted)
@@ -98,6 +103,17 @@ namespace fsgmpm
     order_scratch.resize(n);
     for (unsigned int p = 0; p < n; ++p)
       order_scratch[cell_end[cell[p]]++] = p;
+    // Inside each cell by id: the points that stayed keep their order and
+    // the few that came in are inserted.
+    for (const unsigned int c : occupied_cells)
+      for (unsigned int i = cell_begin[c] + 1; i < cell_end[c]; ++i)
+        {
+          const unsigned int q = order_scratch[i];
+          unsigned int       j = i;
+          for (; j > cell_begin[c] && id[order_scratch[j - 1]] > id[q]; --j)
+            order_scratch[j] = order_scratch[j - 1];
+          order_scratch[j] = q;
+        }
 
     permute(position, order_scratch);
     permute(velocity, order_scratch);
@@ -109,6 +125,9 @@ namespace fsgmpm
     permute(material_id, order_scratch);
     permute(body_id, order_scratch);
     permute(free_surface, order_scratch);
+    permute(id, order_scratch);
+    if (!ghost.empty())
+      permute(ghost, order_scratch);
     if (with_affine_velocity)
       permute(affine_velocity, order_scratch);
   }
@@ -141,6 +160,9 @@ namespace fsgmpm
     shrink(material_id);
     shrink(body_id);
     shrink(free_surface);
+    shrink(id);
+    if (!ghost.empty())
+      shrink(ghost);
     if (with_affine_velocity)
       shrink(affine_velocity);
   }
@@ -162,7 +184,8 @@ namespace fsgmpm
             * sizeof(double)
         + cell.capacity() * sizeof(unsigned int)
         + (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t)
-        + free_surface.capacity()
+        + free_surface.capacity() + ghost.capacity()
+        + id.capacity() * sizeof(unsigned int)
         + order_scratch.capacity() * sizeof(unsigned int)
         + value_scratch.capacity();
     return bytes / size();

@@ -67,7 +67,8 @@ namespace fsgmpm
     add_step(const Stages::GridUpdateResult &grid_result,
              const unsigned int              lost_particles,
              const NodalFields<dim>         &nodes,
-             Monitors                       &monitors)
+             Monitors                       &monitors,
+             const DomainPartition<dim>     *partition)
     {
       monitors.lost_particles += lost_particles;
       monitors.external_work += grid_result.external_work_increment;
@@ -76,7 +77,10 @@ namespace fsgmpm
       // Eq. (30) from the nodal (remapped) velocities.
       double nodal_ke = 0;
       for (const unsigned int i : nodes.active_nodes)
-        nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
+        if (partition == nullptr || partition->counted_nodes()[i])
+          nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
+      if (partition != nullptr)
+        nodal_ke = Utilities::MPI::sum(nodal_ke, partition->get_communicator());
       monitors.grid_kinetic_energy = nodal_ke;
       monitors.dr_energy_ratio     = (monitors.external_work > 0)
                                        ? nodal_ke / monitors.external_work
@@ -112,7 +116,8 @@ namespace fsgmpm
   template void   add_step<dim>(const Stages::GridUpdateResult &,         \
                               const unsigned int,                       \
                               const NodalFields<dim> &,                 \
-                              Monitors &);                              \
+                              Monitors &,                               \
+                              const DomainPartition<dim> *);            \
   template double potential_energy_above<dim>(const ParticleStore<dim> &, \
                                               const Tensor<1, dim> &,     \
                                               const Point<dim> &);

@@ -112,6 +112,14 @@ namespace fsgmpm
                         Patterns::Integer(0, 1024),
                         "Threads for the particle and grid loops (0: all "
                         "cores or DEAL_II_NUM_THREADS; at most 1024).");
+      prm.declare_entry(
+        "Repartition imbalance",
+        "1.2",
+        Patterns::Double(0),
+        "MPI runs: split the cells again (METIS, weighted by the points per "
+        "cell) after a step at which the most loaded process holds more "
+        "than this many times the mean number of points (0: never; values "
+        "in (0, 1) are refused). The results do not depend on it.");
     }
     prm.leave_subsection();
 
@@ -290,8 +298,14 @@ namespace fsgmpm
                 ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "
                            "(10^4 g) in magnitude; got <"
                            + prm.get("Gravity") + ">."));
-    gravity_ramp_time = prm.get_double("Gravity ramp time");
-    n_threads         = prm.get_integer("Number of threads");
+    gravity_ramp_time     = prm.get_double("Gravity ramp time");
+    n_threads             = prm.get_integer("Number of threads");
+    repartition_imbalance = prm.get_double("Repartition imbalance");
+    AssertThrow(repartition_imbalance == 0 || repartition_imbalance >= 1,
+                ExcMessage("Simulation/Repartition imbalance is the ratio of "
+                           "the most loaded process's points to the mean, at "
+                           "least 1 (or 0: never repartition); got "
+                           + prm.get("Repartition imbalance") + "."));
     prm.leave_subsection();
     time_step.parse_parameters(prm);
     relaxation.parse_parameters(prm);

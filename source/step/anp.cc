@@ -11,7 +11,8 @@ namespace fsgmpm
                            const NodalFields<dim>             &nodes,
                            const std::vector<MaterialOptions> &options,
                            SmoothingFields<dim>               &smoothing,
-                           ParticleStore<dim>                 &particles)
+                           ParticleStore<dim>                 &particles,
+                           const std::function<void()>        &synchronise)
     {
       bool any = false;
       for (unsigned int m = 0; m < options.size(); ++m)
@@ -66,6 +67,10 @@ namespace fsgmpm
           }
         flush();
       });
+      // MPI: the nodal values on the rim of the ghost layer from their
+      // owners, before the points read them back.
+      if (synchronise)
+        synchronise();
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         // Without interpolation p_bar is the cell's, per material: computed
         // once per run of points of the same material.
@@ -111,12 +116,14 @@ namespace fsgmpm
                               const NodalFields<2> &,
                               const std::vector<MaterialOptions> &,
                               SmoothingFields<2> &,
-                              ParticleStore<2> &);
+                              ParticleStore<2> &,
+                              const std::function<void()> &);
     template void
     average_nodal_pressure<3>(const BackgroundGrid<3> &,
                               const NodalFields<3> &,
                               const std::vector<MaterialOptions> &,
                               SmoothingFields<3> &,
-                              ParticleStore<3> &);
+                              ParticleStore<3> &,
+                              const std::function<void()> &);
   } // namespace Stages
 } // namespace fsgmpm

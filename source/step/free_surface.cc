@@ -11,7 +11,8 @@ namespace fsgmpm
                         const NodalFields<dim>             &nodes,
                         const std::vector<MaterialOptions> &options,
                         SmoothingFields<dim>               &smoothing,
-                        ParticleStore<dim>                 &particles)
+                        ParticleStore<dim>                 &particles,
+                        const std::function<void()>        &synchronise)
     {
       bool any = false;
       for (const auto &o : options)
@@ -61,6 +62,10 @@ namespace fsgmpm
             }
         }
 
+      // MPI: the nodal values on the rim of the ghost layer from their
+      // owners, before the points read them back.
+      if (synchronise)
+        synchronise();
       std::vector<std::pair<unsigned int, unsigned int>> flagged(
         particles.occupied_cells.size(), {0, 0});
       CellLoops::parallel_range(
@@ -112,12 +117,14 @@ namespace fsgmpm
                            const NodalFields<2> &,
                            const std::vector<MaterialOptions> &,
                            SmoothingFields<2> &,
-                           ParticleStore<2> &);
+                           ParticleStore<2> &,
+                           const std::function<void()> &);
     template std::pair<unsigned int, unsigned int>
     detect_free_surface<3>(const BackgroundGrid<3> &,
                            const NodalFields<3> &,
                            const std::vector<MaterialOptions> &,
                            SmoothingFields<3> &,
-                           ParticleStore<3> &);
+                           ParticleStore<3> &,
+                           const std::function<void()> &);
   } // namespace Stages
 } // namespace fsgmpm

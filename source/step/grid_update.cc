@@ -8,11 +8,12 @@ namespace fsgmpm
   {
     template <int dim>
     GridUpdateResult
-    grid_update(const NodalConstraints<dim> &constraints,
-                const Tensor<1, dim>        &gravity,
-                const double                 alpha,
-                const double                 dt,
-                NodalFields<dim>            &nodes)
+    grid_update(const NodalConstraints<dim>     &constraints,
+                const Tensor<1, dim>            &gravity,
+                const double                     alpha,
+                const double                     dt,
+                NodalFields<dim>                &nodes,
+                const std::vector<std::uint8_t> *counted_nodes)
     {
       GridUpdateResult r;
       // The damping work is booked on the nodes that carry a share of the
@@ -66,6 +67,8 @@ namespace fsgmpm
           nodes.velocity[i]     = v_new;
           nodes.acceleration[i] = (v_new - v_old) / dt;
 
+          if (counted_nodes != nullptr && (*counted_nodes)[i] == 0)
+            continue;
           const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
           r.external_work_increment += dt * (nodes.external_force[i] * v_mid);
           if (m >= light)
@@ -86,12 +89,14 @@ namespace fsgmpm
                    const Tensor<1, 2> &,
                    const double,
                    const double,
-                   NodalFields<2> &);
+                   NodalFields<2> &,
+                   const std::vector<std::uint8_t> *);
     template GridUpdateResult
     grid_update<3>(const NodalConstraints<3> &,
                    const Tensor<1, 3> &,
                    const double,
                    const double,
-                   NodalFields<3> &);
+                   NodalFields<3> &,
+                   const std::vector<std::uint8_t> *);
   } // namespace Stages
 } // namespace fsgmpm

@@ -37,6 +37,39 @@ namespace fsgmpm
 
 
   template <int dim>
+  void
+  MpmStep<dim>::synchronise_free_surface()
+  {
+    if (partition != nullptr)
+      partition->update_ghost_nodes(smoothing.volume_fraction,
+                                    nodes.active_stamp,
+                                    nodes.stamp);
+  }
+
+
+
+  template <int dim>
+  template <typename Predicate>
+  void
+  MpmStep<dim>::synchronise_smoothing(const Predicate &uses)
+  {
+    if (partition == nullptr)
+      return;
+    for (unsigned int m = 0; m < material_options.size(); ++m)
+      if (uses(material_options[m]))
+        {
+          partition->update_ghost_nodes(smoothing.numerator[m],
+                                        nodes.active_stamp,
+                                        nodes.stamp);
+          partition->update_ghost_nodes(smoothing.denominator[m],
+                                        nodes.active_stamp,
+                                        nodes.stamp);
+        }
+  }
+
+
+
+  template <int dim>
   const std::vector<std::string> &
   MpmStep<dim>::stage_names()
   {
@@ -143,8 +176,13 @@ namespace fsgmpm
     constraints.set_time(new_time);
     {
       TimerOutput::Scope scope(timer, "grid_update");
-      result.grid = Stages::grid_update(
-        constraints, gravity, settings.local_damping, dt, nodes);
+      result.grid = Stages::grid_update(constraints,
+                                        gravity,
+                                        settings.local_damping,
+                                        dt,
+                                        nodes,
+                                        partition ? &partition->counted_nodes()
+                                                  : nullptr);
       // The contact's dissipation is not booked as damping work: the nodal
       // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
       // guard only objects to energy gained.
@@ -155,6 +193,15 @@ namespace fsgmpm
                             dt,
                             true,
                             nodes);
+      if (partition != nullptr)
+        {
+          partition->update_ghost_nodes(nodes.velocity,
+                                        nodes.active_stamp,
+                                        nodes.stamp);
+          partition->update_ghost_nodes(nodes.acceleration,
+                                        nodes.active_stamp,
+                                        nodes.stamp);
+        }
     }
     {
       TimerOutput::Scope scope(timer, "g2p");
@@ -184,6 +231,10 @@ namespace fsgmpm
                               dt,
                               false,
                               nodes);
+        if (partition != nullptr)
+          partition->update_ghost_nodes(nodes.velocity,
+                                        nodes.active_stamp,
+                                        nodes.stamp);
       }
     {
       TimerOutput::Scope scope(timer, "velocity_gradient_nmd");
@@ -192,6 +243,7 @@ namespace fsgmpm
           == Stages::StressIntegration::nodal_projection)
         Stages::nodal_velocity_gradients(grid, nodes, smoothing, particles);
       Stages::nmd(grid, nodes, material_options, smoothing, particles);
+      synchronise_smoothing([](const MaterialOptions &o) { return o.nmd; });
     }
     if (particles.has_affine_velocity())
       {
@@ -211,12 +263,16 @@ namespace fsgmpm
     {
       TimerOutput::Scope scope(timer, "free_surface");
       result.free_surface = Stages::detect_free_surface(
-        grid, nodes, material_options, smoothing, particles);
+        grid, nodes, material_options, smoothing, particles, [this]() {
+          synchronise_free_surface();
+        });
     }
     {
       TimerOutput::Scope scope(timer, "anp");
       Stages::average_nodal_pressure(
-        grid, nodes, material_options, smoothing, particles);
+        grid, nodes, material_options, smoothing, particles, [this]() {
+          synchronise_smoothing([](const MaterialOptions &o) { return o.anp; });
+        });
     }
     {
       TimerOutput::Scope scope(timer, "position_update");

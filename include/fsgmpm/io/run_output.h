@@ -55,13 +55,16 @@ namespace fsgmpm
     void
     remove_previous_output() const;
 
-    /// Write the state at @p time (@p membrane may be null).
+    /// Write the state at @p time (@p membrane may be null). Without
+    /// @p nodal_fields the points' fields that need the nodal velocities
+    /// (vorticity) are written as zero.
     void
     write(const double               time,
           const ParticleStore<dim>  &particles,
           const BackgroundGrid<dim> &grid,
           const NodalFields<dim>    &nodes,
-          const Membrane<dim>       *membrane);
+          const Membrane<dim>       *membrane,
+          const bool                 nodal_fields = true);
 
     State
     state() const;

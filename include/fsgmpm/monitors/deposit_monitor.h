@@ -34,6 +34,12 @@ namespace fsgmpm
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
 
+    bool
+    values_are_maxima() const override
+    {
+      return true;
+    }
+
   private:
     double wall_x, base_y;
   };

@@ -98,6 +98,16 @@ namespace fsgmpm
     {
       return false;
     }
+
+    /// True if every value is a maximum over the points that is zero or
+    /// more (a front, a height), so that the value over all MPI processes
+    /// is the maximum of theirs. Monitors that are not cannot run on more
+    /// than one process yet.
+    virtual bool
+    values_are_maxima() const
+    {
+      return false;
+    }
   };
 } // namespace fsgmpm
 

@@ -55,6 +55,11 @@ namespace fsgmpm
     bool
     needs_membrane() const;
 
+    /// The selected monitors whose values are not maxima (which cannot be
+    /// combined over MPI processes yet), comma separated; empty if none.
+    std::string
+    not_maxima() const;
+
     /// The selected monitor registered as @p name; throws, naming the
     /// selected ones, if the scene did not select it.
     const SceneMonitor<dim> &

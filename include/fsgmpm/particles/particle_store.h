@@ -31,7 +31,8 @@ namespace fsgmpm
       return position.size();
     }
 
-    /// Append one point; its cell must already be known.
+    /// Append one point; its cell must already be known. It gets the next
+    /// point id (ids count the points in the order they are added).
     void
     add(const Point<dim>            &x,
         const unsigned int           cell,
@@ -43,11 +44,15 @@ namespace fsgmpm
         const std::uint16_t          body);
 
     /**
-     * Sort by cell (stable, so the order inside a cell, and hence every sum,
-     * is deterministic); rebuilds cell_begin, cell_end and occupied_cells.
-     * The cost is O(n + k log k) for n points in k occupied cells, whatever
-     * the number of cells: work follows the material, not the mesh (only
-     * the entries of the cells occupied before and after are touched).
+     * Sort by cell, and inside a cell by point id: a canonical order that
+     * depends only on which points are where, not on the history of the
+     * array, so every sum over the points of a cell is the same whichever
+     * process holds them (MPI runs reproduce serial runs bit for bit).
+     * Rebuilds cell_begin, cell_end and occupied_cells. The cost is
+     * O(n + k log k) for n points in k occupied cells, whatever the number
+     * of cells: work follows the material, not the mesh (only the entries
+     * of the cells occupied before and after are touched); the points of a
+     * cell are ordered by insertion sort, linear when few moved.
      */
     void
     sort_by_cell(const unsigned int n_cells);
@@ -96,6 +101,16 @@ namespace fsgmpm
     std::vector<std::uint16_t> body_id;
     /// 1 for points flagged as free surface or drops (paper Eq. 33).
     std::vector<std::uint8_t> free_surface;
+    /// Point id, unique over all processes: the fill order of the serial
+    /// run, which fixes the order of the points inside a cell.
+    std::vector<unsigned int> id;
+    /// MPI runs only (empty otherwise): 1 for a copy of a point owned by
+    /// another process, held during a step because its cell touches a node
+    /// of one of this process's cells (DistributedPoints).
+    std::vector<std::uint8_t> ghost;
+
+    /// The id the next added point gets.
+    unsigned int next_id = 0;
 
   private:
     template <typename T>

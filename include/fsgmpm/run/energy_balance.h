@@ -6,6 +6,7 @@
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/parallel/domain_partition.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/monitors.h>
 #include <fsgmpm/step/stages.h>
@@ -39,13 +40,16 @@ namespace fsgmpm
     /// the dynamic-relaxation ratios of Eq. (30) from the nodal (remapped)
     /// velocities: E_v = grid kinetic energy / external work, E_f =
     /// |F_ext - F_int| / |F_ext| over the unconstrained nodal components
-    /// (infinite until there is external work or force).
+    /// (infinite until there is external work or force). With MPI,
+    /// @p grid_result and @p lost_particles are already global and the
+    /// grid kinetic energy is summed over the nodes each process counts.
     template <int dim>
     void
     add_step(const Stages::GridUpdateResult &grid_result,
              const unsigned int              lost_particles,
              const NodalFields<dim>         &nodes,
-             Monitors                       &monitors);
+             Monitors                       &monitors,
+             const DomainPartition<dim>     *partition = nullptr);
 
     /// Potential energy of the points above @p datum (a point of zero
     /// height, e.g. the mesh's lowest corner): the scale of the at-rest

@@ -54,6 +54,9 @@ namespace fsgmpm
     Tensor<1, dim> gravity;
     double         gravity_ramp_time;
     unsigned int   n_threads;
+    /// MPI: repartition when max/mean points per process exceeds this
+    /// (0: never).
+    double repartition_imbalance;
 
     // Damping of the step (local, mass scaling)
     double local_damping;

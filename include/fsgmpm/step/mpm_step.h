@@ -3,6 +3,7 @@
 
 #include <deal.II/base/timer.h>
 
+#include <fsgmpm/parallel/domain_partition.h>
 #include <fsgmpm/step/stages.h>
 
 #include <memory>
@@ -84,6 +85,25 @@ namespace fsgmpm
     void
     attach_membrane(Membrane<dim> &membrane, const double split_length);
 
+    /**
+     * MPI: the partition whose ghost-layer rim nodes are refreshed after
+     * every stage whose nodal values the points read back (so that ghost
+     * points evolve as their originals), and whose counted nodes make the
+     * grid update's sums local to this process.
+     */
+    void
+    attach_partition(const DomainPartition<dim> &partition)
+    {
+      this->partition = &partition;
+    }
+
+    /**
+     * MPI: refresh the rim values of the free-surface volume fraction (the
+     * synchronise hook of Stages::detect_free_surface); nothing in serial.
+     */
+    void
+    synchronise_free_surface();
+
     /// The coupling of the attached membrane (its transfer weights; for a
     /// checkpoint, or to run its stages in a program's own order); null
     /// without a membrane.
@@ -145,6 +165,13 @@ namespace fsgmpm
     SmoothingFields<dim>                         &smoothing;
     /// The attached membrane's coupling, if any.
     std::unique_ptr<MembraneCoupling<dim>> membrane_coupling;
+    const DomainPartition<dim>            *partition = nullptr;
+
+    /// MPI: refresh the rim values of the nodal numerators and
+    /// denominators of the materials for which @p uses is true.
+    template <typename Predicate>
+    void
+    synchronise_smoothing(const Predicate &uses);
     /// Per cell sum_p V_p M_p for the membrane's nodal time-step bound.
     std::vector<double> cell_stiffness;
 

@@ -11,6 +11,7 @@
 #include <fsgmpm/step/smoothing_fields.h>
 #include <fsgmpm/step/stress_integration.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -93,11 +94,14 @@ namespace fsgmpm
     /// wall conditions on v^{n+1} = v^n + dt a, and a consistent with them.
     template <int dim>
     GridUpdateResult
-    grid_update(const NodalConstraints<dim> &constraints,
-                const Tensor<1, dim>        &gravity,
-                const double                 damping_alpha,
-                const double                 dt,
-                NodalFields<dim>            &nodes);
+    /// With @p counted_nodes (MPI), the result sums only the nodes marked
+    /// 1 there, so that the sums over all processes count each node once.
+    grid_update(const NodalConstraints<dim>     &constraints,
+                const Tensor<1, dim>            &gravity,
+                const double                     damping_alpha,
+                const double                     dt,
+                NodalFields<dim>                &nodes,
+                const std::vector<std::uint8_t> *counted_nodes = nullptr);
 
     /// Multi-field contact, part 1 (once per step, after p2g and
     /// MembraneCoupling::p2g): at every node of field 0 the contact normal,
@@ -252,7 +256,8 @@ namespace fsgmpm
                         const NodalFields<dim>             &nodes,
                         const std::vector<MaterialOptions> &options,
                         SmoothingFields<dim>               &smoothing,
-                        ParticleStore<dim>                 &particles);
+                        ParticleStore<dim>                 &particles,
+                        const std::function<void()>        &synchronise = {});
 
     /// Stage 5e, ANP (Eqs. 28-29): nodal volume-weighted average of the
     /// pressure of the non-flagged points per material, mapped back as the
@@ -263,7 +268,8 @@ namespace fsgmpm
                            const NodalFields<dim>             &nodes,
                            const std::vector<MaterialOptions> &options,
                            SmoothingFields<dim>               &smoothing,
-                           ParticleStore<dim>                 &particles);
+                           ParticleStore<dim>                 &particles,
+                           const std::function<void()> &synchronise = {});
 
     /// Stage 6 (Eq. 21): x_p += dt sum_i N_i(x_p) v_i. Returns the largest
     /// ratio of a point's displacement to its cell's smallest altitude

@@ -1,0 +1,64 @@
+#ifndef fsgmpm_parallel_distributed_points_h
+#define fsgmpm_parallel_distributed_points_h
+
+#include <fsgmpm/parallel/domain_partition.h>
+#include <fsgmpm/particles/particle_store.h>
+
+namespace fsgmpm
+{
+  /**
+   * Moving material points between MPI processes with their whole state
+   * (DomainPartition describes who owns what). Between steps a process
+   * holds only the points of its own cells; during a step also the ghost
+   * copies of the points around them.
+   */
+  namespace DistributedPoints
+  {
+    /**
+     * Keep only the points of cells this process owns (after every
+     * process filled the same bodies, or after a repartition).
+     */
+    template <int dim>
+    void
+    keep_owned(const DomainPartition<dim> &partition,
+               ParticleStore<dim>         &particles);
+
+    /**
+     * Send copies of this process's points to the processes that hold
+     * their cells as ghost cells, and receive theirs (flagged in
+     * particles.ghost). Sorted afterwards.
+     */
+    template <int dim>
+    void
+    add_ghosts(const DomainPartition<dim> &partition,
+               ParticleStore<dim>         &particles);
+
+    /**
+     * After a step: drop the ghost copies, send the points that moved into
+     * another process's cells to it with their whole state, and receive
+     * those that moved into ours. Sorted afterwards.
+     */
+    template <int dim>
+    void
+    migrate(const DomainPartition<dim> &partition,
+            ParticleStore<dim>         &particles);
+
+    /**
+     * All points on rank 0 (in the canonical order, as in a serial run),
+     * for output; an empty store elsewhere.
+     */
+    template <int dim>
+    void
+    gather_on_root(const DomainPartition<dim> &partition,
+                   const ParticleStore<dim>   &particles,
+                   ParticleStore<dim>         &all);
+
+    /// The number of points over all processes.
+    template <int dim>
+    unsigned int
+    global_size(const DomainPartition<dim> &partition,
+                const ParticleStore<dim>   &particles);
+  } // namespace DistributedPoints
+} // namespace fsgmpm
+
+#endif

@@ -1,0 +1,177 @@
+#ifndef fsgmpm_parallel_domain_partition_h
+#define fsgmpm_parallel_domain_partition_h
+
+#include <deal.II/base/mpi.h>
+
+#include <fsgmpm/grid/background_grid.h>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace fsgmpm
+{
+  using namespace dealii;
+
+  /**
+   * Which MPI process owns which cell of the background grid, and the halo
+   * that makes every process's nodal values exact.
+   *
+   * The cells are split by METIS through deal.II's
+   * GridTools::partition_triangulation, weighted by the points they hold,
+   * so work follows the material. A process holds the points of its own
+   * cells and, during a step, copies ("ghosts") of the points of every cell
+   * that shares a vertex with one of its cells: the same layer that
+   * parallel::fullydistributed::Triangulation keeps as ghost cells. Then
+   * every node of an owned cell receives all its contributions, in the
+   * serial order (cells by colour and index, points by id), so its value
+   * is the serial one bit for bit. The nodes on the outer rim of the ghost
+   * layer miss contributions; update_ghost_nodes() overwrites them with the
+   * values of a process that owns a cell around them, after each stage
+   * whose nodal values the ghost points read back. With that, ghost points
+   * evolve exactly as their originals, and an MPI run repeats the serial
+   * run's arithmetic.
+   *
+   * This first version keeps the whole background grid on every process
+   * (memory O(mesh) per process; the points, which dominate, are
+   * distributed). Multi-field contact and membranes are not distributed
+   * yet.
+   */
+  template <int dim>
+  class DomainPartition
+  {
+  public:
+    DomainPartition(const MPI_Comm &comm, const BackgroundGrid<dim> &grid);
+
+    /**
+     * Split the cells over the processes, weighted by @p points_per_cell
+     * (the points of each cell over all processes). METIS runs on rank 0
+     * and the result is broadcast, so all processes agree.
+     */
+    void
+    partition(const std::vector<unsigned int> &points_per_cell);
+
+    unsigned int
+    n_ranks() const
+    {
+      return n_processes;
+    }
+
+    unsigned int
+    rank() const
+    {
+      return this_process;
+    }
+
+    const MPI_Comm &
+    get_communicator() const
+    {
+      return comm;
+    }
+
+    /// The process that owns cell c.
+    unsigned int
+    owner(const unsigned int c) const
+    {
+      return cell_owner[c];
+    }
+
+    /// The processes that hold cell c as a ghost cell (not its owner).
+    const std::vector<unsigned int> &
+    ghost_holders(const unsigned int c) const
+    {
+      return ghost_ranks[c];
+    }
+
+    /**
+     * 1 for the nodes whose sums (energies, work, norms) this process adds
+     * up: those whose lowest-ranked adjacent owner it is, so that every
+     * node is counted once over all processes.
+     */
+    const std::vector<std::uint8_t> &
+    counted_nodes() const
+    {
+      return counted;
+    }
+
+    /**
+     * Overwrite this process's values on the outer rim of its ghost layer
+     * by those of the process that computed them exactly. Only the entries
+     * of active nodes (active_stamp[i] == stamp) are written: a node is
+     * active here only if it is active at the sender too.
+     */
+    template <typename T>
+    void
+    update_ghost_nodes(std::vector<T>                  &values,
+                       const std::vector<unsigned int> &active_stamp,
+                       const unsigned int               stamp) const;
+
+    /// Number of (send + receive) rim nodes: the halo exchanged per field.
+    unsigned int
+    n_halo_nodes() const;
+
+    /// Number of cells this process owns.
+    unsigned int
+    n_owned_cells() const;
+
+  private:
+    MPI_Comm                               comm;
+    const BackgroundGrid<dim>             &grid;
+    unsigned int                           n_processes;
+    unsigned int                           this_process;
+    std::vector<unsigned int>              cell_owner;
+    std::vector<std::vector<unsigned int>> ghost_ranks;
+    std::vector<std::uint8_t>              counted;
+
+    /// Per neighbouring process: the rim nodes sent to it and received
+    /// from it, ascending (both sides compute the same lists).
+    struct Neighbour
+    {
+      unsigned int              rank;
+      std::vector<unsigned int> send, receive;
+    };
+    std::vector<Neighbour>                 neighbours;
+    mutable std::vector<std::vector<char>> send_buffers, receive_buffers;
+
+    void
+    exchange_bytes() const;
+  };
+
+
+
+  template <int dim>
+  template <typename T>
+  void
+  DomainPartition<dim>::update_ghost_nodes(
+    std::vector<T>                  &values,
+    const std::vector<unsigned int> &active_stamp,
+    const unsigned int               stamp) const
+  {
+    if (neighbours.empty())
+      return;
+    send_buffers.resize(neighbours.size());
+    receive_buffers.resize(neighbours.size());
+    for (unsigned int k = 0; k < neighbours.size(); ++k)
+      {
+        const auto &send = neighbours[k].send;
+        send_buffers[k].resize(send.size() * sizeof(T));
+        for (unsigned int j = 0; j < send.size(); ++j)
+          std::memcpy(send_buffers[k].data() + j * sizeof(T),
+                      &values[send[j]],
+                      sizeof(T));
+        receive_buffers[k].resize(neighbours[k].receive.size() * sizeof(T));
+      }
+    exchange_bytes();
+    for (unsigned int k = 0; k < neighbours.size(); ++k)
+      {
+        const auto &receive = neighbours[k].receive;
+        for (unsigned int j = 0; j < receive.size(); ++j)
+          if (active_stamp[receive[j]] == stamp)
+            std::memcpy(&values[receive[j]],
+                        receive_buffers[k].data() + j * sizeof(T),
+                        sizeof(T));
+      }
+  }
+} // namespace fsgmpm
+
+#endif

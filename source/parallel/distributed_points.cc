@@ -1,0 +1,214 @@
+#include <deal.II/base/mpi.h>
+
+#include <fsgmpm/parallel/distributed_points.h>
+
+#include <cstring>
+#include <map>
+
+namespace fsgmpm
+{
+  namespace DistributedPoints
+  {
+    namespace
+    {
+      /// The whole state of one point, as it travels.
+      template <int dim>
+      struct Record
+      {
+        Point<dim>            position;
+        Tensor<1, dim>        velocity;
+        Tensor<2, dim>        affine_velocity;
+        SymmetricTensor<2, 3> stress;
+        double                mass, volume, reference_volume;
+        unsigned int          cell, id;
+        std::uint16_t         material_id, body_id;
+        std::uint8_t          free_surface;
+      };
+
+      template <int dim>
+      void
+      pack(const ParticleStore<dim> &particles,
+           const unsigned int        p,
+           std::vector<char>        &buffer)
+      {
+        Record<dim> r;
+        r.position = particles.position[p];
+        r.velocity = particles.velocity[p];
+        if (particles.has_affine_velocity())
+          r.affine_velocity = particles.affine_velocity[p];
+        r.stress            = particles.stress[p];
+        r.mass              = particles.mass[p];
+        r.volume            = particles.volume[p];
+        r.reference_volume  = particles.reference_volume[p];
+        r.cell              = particles.cell[p];
+        r.id                = particles.id[p];
+        r.material_id       = particles.material_id[p];
+        r.body_id           = particles.body_id[p];
+        r.free_surface      = particles.free_surface[p];
+        const std::size_t n = buffer.size();
+        buffer.resize(n + sizeof(r));
+        std::memcpy(buffer.data() + n, &r, sizeof(r));
+      }
+
+      /// Append the points of @p buffer; @p ghost marks them as copies.
+      template <int dim>
+      void
+      unpack(const std::vector<char> &buffer,
+             const std::uint8_t       ghost,
+             ParticleStore<dim>      &particles)
+      {
+        AssertThrow(buffer.size() % sizeof(Record<dim>) == 0,
+                    ExcInternalError());
+        for (std::size_t k = 0; k < buffer.size(); k += sizeof(Record<dim>))
+          {
+            Record<dim> r;
+            std::memcpy(&r, buffer.data() + k, sizeof(r));
+            particles.position.push_back(r.position);
+            particles.velocity.push_back(r.velocity);
+            if (particles.has_affine_velocity())
+              particles.affine_velocity.push_back(r.affine_velocity);
+            particles.stress.push_back(r.stress);
+            particles.mass.push_back(r.mass);
+            particles.volume.push_back(r.volume);
+            particles.reference_volume.push_back(r.reference_volume);
+            particles.cell.push_back(r.cell);
+            particles.id.push_back(r.id);
+            particles.material_id.push_back(r.material_id);
+            particles.body_id.push_back(r.body_id);
+            particles.free_surface.push_back(r.free_surface);
+            if (!particles.ghost.empty())
+              particles.ghost.push_back(ghost);
+          }
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    keep_owned(const DomainPartition<dim> &partition,
+               ParticleStore<dim>         &particles)
+    {
+      std::vector<std::uint8_t> flag(particles.size());
+      for (unsigned int p = 0; p < particles.size(); ++p)
+        flag[p] = (partition.owner(particles.cell[p]) != partition.rank());
+      particles.remove_flagged(flag);
+      particles.ghost.clear();
+      particles.sort_by_cell(particles.cell_begin.size());
+    }
+
+
+
+    template <int dim>
+    void
+    add_ghosts(const DomainPartition<dim> &partition,
+               ParticleStore<dim>         &particles)
+    {
+      if (partition.n_ranks() == 1)
+        return;
+      std::map<unsigned int, std::vector<char>> send;
+      for (const unsigned int c : particles.occupied_cells)
+        for (const unsigned int q : partition.ghost_holders(c))
+          {
+            std::vector<char> &buffer = send[q];
+            for (unsigned int p = particles.cell_begin[c];
+                 p < particles.cell_end[c];
+                 ++p)
+              pack(particles, p, buffer);
+          }
+      const auto received
+        = Utilities::MPI::some_to_some(partition.get_communicator(), send);
+      // Mark the own points, then append the copies.
+      particles.ghost.assign(particles.size(), 0);
+      for (const auto &[rank, buffer] : received)
+        unpack(buffer, 1, particles);
+      if (received.empty())
+        particles.ghost.clear();
+      particles.sort_by_cell(particles.cell_begin.size());
+    }
+
+
+
+    template <int dim>
+    void
+    migrate(const DomainPartition<dim> &partition,
+            ParticleStore<dim>         &particles)
+    {
+      if (partition.n_ranks() == 1)
+        return;
+      std::map<unsigned int, std::vector<char>> send;
+      std::vector<std::uint8_t>                 flag(particles.size(), 0);
+      for (unsigned int p = 0; p < particles.size(); ++p)
+        {
+          if (!particles.ghost.empty() && particles.ghost[p])
+            flag[p] = 1;
+          else if (partition.owner(particles.cell[p]) != partition.rank())
+            {
+              pack(particles, p, send[partition.owner(particles.cell[p])]);
+              flag[p] = 1;
+            }
+        }
+      const auto received
+        = Utilities::MPI::some_to_some(partition.get_communicator(), send);
+      particles.remove_flagged(flag);
+      particles.ghost.clear();
+      for (const auto &[rank, buffer] : received)
+        unpack(buffer, 0, particles);
+      particles.sort_by_cell(particles.cell_begin.size());
+    }
+
+
+
+    template <int dim>
+    void
+    gather_on_root(const DomainPartition<dim> &partition,
+                   const ParticleStore<dim>   &particles,
+                   ParticleStore<dim>         &all)
+    {
+      std::vector<char> buffer;
+      buffer.reserve(particles.size() * sizeof(Record<dim>));
+      for (unsigned int p = 0; p < particles.size(); ++p)
+        if (particles.ghost.empty() || !particles.ghost[p])
+          pack(particles, p, buffer);
+      const auto gathered
+        = Utilities::MPI::gather(partition.get_communicator(), buffer, 0);
+      all = ParticleStore<dim>();
+      if (particles.has_affine_velocity())
+        all.enable_affine_velocity();
+      for (const auto &b : gathered)
+        unpack(b, 0, all);
+      all.sort_by_cell(particles.cell_begin.size());
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    global_size(const DomainPartition<dim> &partition,
+                const ParticleStore<dim>   &particles)
+    {
+      unsigned int n = 0;
+      for (unsigned int p = 0; p < particles.size(); ++p)
+        n += (particles.ghost.empty() || !particles.ghost[p]);
+      return Utilities::MPI::sum(n, partition.get_communicator());
+    }
+
+
+
+#define FSGMPM_INSTANTIATE(dim)                                           \
+  template void         keep_owned<dim>(const DomainPartition<dim> &,     \
+                                ParticleStore<dim> &);            \
+  template void         add_ghosts<dim>(const DomainPartition<dim> &,     \
+                                ParticleStore<dim> &);            \
+  template void         migrate<dim>(const DomainPartition<dim> &,        \
+                             ParticleStore<dim> &);               \
+  template void         gather_on_root<dim>(const DomainPartition<dim> &, \
+                                    const ParticleStore<dim> &,   \
+                                    ParticleStore<dim> &);        \
+  template unsigned int global_size<dim>(const DomainPartition<dim> &,    \
+                                         const ParticleStore<dim> &);
+    FSGMPM_INSTANTIATE(2)
+    FSGMPM_INSTANTIATE(3)
+#undef FSGMPM_INSTANTIATE
+  } // namespace DistributedPoints
+} // namespace fsgmpm

@@ -1,0 +1,193 @@
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <fsgmpm/parallel/domain_partition.h>
+
+#include <algorithm>
+
+namespace fsgmpm
+{
+  template <int dim>
+  DomainPartition<dim>::DomainPartition(const MPI_Comm            &comm,
+                                        const BackgroundGrid<dim> &grid)
+    : comm(comm)
+    , grid(grid)
+    , n_processes(Utilities::MPI::n_mpi_processes(comm))
+    , this_process(Utilities::MPI::this_mpi_process(comm))
+    , cell_owner(grid.n_cells(), 0)
+    , ghost_ranks(grid.n_cells())
+    , counted(grid.n_nodes(), 1)
+  {
+    AssertThrow(grid.n_cells() == grid.n_base_cells(),
+                ExcMessage("Multi-field contact (bodies in more than one "
+                           "velocity field) does not run on more than one MPI "
+                           "process yet; run it with one process."));
+  }
+
+
+
+  template <int dim>
+  void
+  DomainPartition<dim>::partition(
+    const std::vector<unsigned int> &points_per_cell)
+  {
+    const unsigned int n_cells = grid.n_cells();
+    AssertThrow(points_per_cell.size() == n_cells, ExcInternalError());
+    if (n_processes > 1)
+      {
+        if (this_process == 0)
+          {
+            // An empty cell still costs a little (its share of the mesh);
+            // a point costs its transfers.
+            std::vector<unsigned int> weights(n_cells);
+            for (unsigned int c = 0; c < n_cells; ++c)
+              weights[c] = 1 + 64 * points_per_cell[c];
+            Triangulation<dim> tria;
+            tria.copy_triangulation(grid.get_triangulation());
+            GridTools::partition_triangulation(
+              n_processes, weights, tria, SparsityTools::Partitioner::metis);
+            for (const auto &cell : tria.active_cell_iterators())
+              cell_owner[cell->active_cell_index()] = cell->subdomain_id();
+          }
+        const int ierr
+          = MPI_Bcast(cell_owner.data(), n_cells, MPI_UNSIGNED, 0, comm);
+        AssertThrowMPI(ierr);
+      }
+
+    // The cells around every node (CSR).
+    const unsigned int        n_nodes = grid.n_nodes();
+    std::vector<unsigned int> start(n_nodes + 1, 0), cells;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (const unsigned int i : grid.cell_nodes[c])
+        ++start[i + 1];
+    for (unsigned int i = 0; i < n_nodes; ++i)
+      start[i + 1] += start[i];
+    cells.resize(start[n_nodes]);
+    {
+      std::vector<unsigned int> fill(start.begin(), start.end() - 1);
+      for (unsigned int c = 0; c < n_cells; ++c)
+        for (const unsigned int i : grid.cell_nodes[c])
+          cells[fill[i]++] = c;
+    }
+
+    // A process holds cell c (owned or ghost) if it owns a cell that shares
+    // a vertex with c.
+    std::vector<unsigned int> ranks;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        ranks.clear();
+        for (const unsigned int i : grid.cell_nodes[c])
+          for (unsigned int j = start[i]; j < start[i + 1]; ++j)
+            ranks.push_back(cell_owner[cells[j]]);
+        std::sort(ranks.begin(), ranks.end());
+        ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+        ranks.erase(std::find(ranks.begin(), ranks.end(), cell_owner[c]));
+        ghost_ranks[c] = ranks;
+      }
+
+    // Node i is exact on every process owning a cell around it (set A);
+    // the processes that hold a cell around it only as a ghost (set R)
+    // receive it from the lowest-ranked process of A.
+    std::vector<std::vector<unsigned int>> send(n_processes),
+      receive(n_processes);
+    std::vector<unsigned int> around, holders;
+    for (unsigned int i = 0; i < n_nodes; ++i)
+      {
+        around.clear();
+        holders.clear();
+        for (unsigned int j = start[i]; j < start[i + 1]; ++j)
+          {
+            const unsigned int c = cells[j];
+            around.push_back(cell_owner[c]);
+            holders.insert(holders.end(),
+                           ghost_ranks[c].begin(),
+                           ghost_ranks[c].end());
+          }
+        if (around.empty())
+          continue;
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        std::sort(holders.begin(), holders.end());
+        holders.erase(std::unique(holders.begin(), holders.end()),
+                      holders.end());
+        const unsigned int source = around.front();
+        counted[i]                = (source == this_process);
+        for (const unsigned int q : holders)
+          if (!std::binary_search(around.begin(), around.end(), q))
+            {
+              if (source == this_process)
+                send[q].push_back(i);
+              if (q == this_process)
+                receive[source].push_back(i);
+            }
+      }
+    neighbours.clear();
+    for (unsigned int q = 0; q < n_processes; ++q)
+      if (!send[q].empty() || !receive[q].empty())
+        neighbours.push_back({q, std::move(send[q]), std::move(receive[q])});
+  }
+
+
+
+  template <int dim>
+  void
+  DomainPartition<dim>::exchange_bytes() const
+  {
+    std::vector<MPI_Request> requests;
+    requests.reserve(2 * neighbours.size());
+    const int tag = 1507;
+    for (unsigned int k = 0; k < neighbours.size(); ++k)
+      if (!receive_buffers[k].empty())
+        {
+          requests.emplace_back();
+          const int ierr = MPI_Irecv(receive_buffers[k].data(),
+                                     receive_buffers[k].size(),
+                                     MPI_BYTE,
+                                     neighbours[k].rank,
+                                     tag,
+                                     comm,
+                                     &requests.back());
+          AssertThrowMPI(ierr);
+        }
+    for (unsigned int k = 0; k < neighbours.size(); ++k)
+      if (!send_buffers[k].empty())
+        {
+          requests.emplace_back();
+          const int ierr = MPI_Isend(send_buffers[k].data(),
+                                     send_buffers[k].size(),
+                                     MPI_BYTE,
+                                     neighbours[k].rank,
+                                     tag,
+                                     comm,
+                                     &requests.back());
+          AssertThrowMPI(ierr);
+        }
+    const int ierr
+      = MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+    AssertThrowMPI(ierr);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DomainPartition<dim>::n_halo_nodes() const
+  {
+    unsigned int n = 0;
+    for (const auto &k : neighbours)
+      n += k.send.size() + k.receive.size();
+    return n;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DomainPartition<dim>::n_owned_cells() const
+  {
+    return std::count(cell_owner.begin(), cell_owner.end(), this_process);
+  }
+
+  template class DomainPartition<2>;
+  template class DomainPartition<3>;
+} // namespace fsgmpm
