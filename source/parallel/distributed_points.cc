@@ -2,7 +2,9 @@
 
 #include <fsgmpm/parallel/distributed_points.h>
 
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <map>
 
 namespace fsgmpm
@@ -118,13 +120,39 @@ namespace fsgmpm
           }
       const auto received
         = Utilities::MPI::some_to_some(partition.get_communicator(), send);
-      // Mark the own points, then append the copies.
-      particles.ghost.assign(particles.size(), 0);
+      if (received.empty())
+        return;
+      // Append the copies without sorting: a ghost cell has one owner,
+      // which sent all its points together, in the canonical order, so each
+      // ghost cell is one run of the appended points. Only the cell ranges
+      // and the list of occupied cells need them (the ghost cells held no
+      // points before).
+      const unsigned int n_owned = particles.size();
+      particles.ghost.assign(n_owned, 0);
       for (const auto &[rank, buffer] : received)
         unpack(buffer, 1, particles);
-      if (received.empty())
-        particles.ghost.clear();
-      particles.sort_by_cell(particles.cell_begin.size());
+      std::vector<unsigned int> ghost_cells;
+      for (unsigned int p = n_owned; p < particles.size(); ++p)
+        {
+          const unsigned int c = particles.cell[p];
+          if (p == n_owned || particles.cell[p - 1] != c)
+            {
+              Assert(particles.cell_end[c] == particles.cell_begin[c],
+                     ExcInternalError());
+              ghost_cells.push_back(c);
+              particles.cell_begin[c] = p;
+            }
+          particles.cell_end[c] = p + 1;
+        }
+      std::sort(ghost_cells.begin(), ghost_cells.end());
+      std::vector<unsigned int> occupied;
+      occupied.reserve(particles.occupied_cells.size() + ghost_cells.size());
+      std::merge(particles.occupied_cells.begin(),
+                 particles.occupied_cells.end(),
+                 ghost_cells.begin(),
+                 ghost_cells.end(),
+                 std::back_inserter(occupied));
+      particles.occupied_cells.swap(occupied);
     }
 
 

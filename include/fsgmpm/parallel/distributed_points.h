@@ -26,7 +26,9 @@ namespace fsgmpm
     /**
      * Send copies of this process's points to the processes that hold
      * their cells as ghost cells, and receive theirs (flagged in
-     * particles.ghost). Sorted afterwards.
+     * particles.ghost). The copies are appended cell by cell, not sorted
+     * in: the cell ranges and occupied_cells include them, which is all
+     * the stages read (relocate sorts everything again).
      */
     template <int dim>
     void
