@@ -298,8 +298,7 @@ namespace fsgmpm
       }));
     if (partition)
       {
-        // Drops the ghosts (no point moved).
-        DistributedPoints::migrate(*partition, particles);
+        DistributedPoints::drop_ghosts(particles);
         set_free_surface_fraction(count_free_surface());
       }
     compute_monitors();

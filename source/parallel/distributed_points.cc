@@ -159,27 +159,67 @@ namespace fsgmpm
 
     template <int dim>
     void
+    drop_ghosts(ParticleStore<dim> &particles)
+    {
+      if (particles.ghost.empty())
+        return;
+      const unsigned int n_owned
+        = std::find(particles.ghost.begin(), particles.ghost.end(), 1)
+          - particles.ghost.begin();
+      AssertThrow(std::find(particles.ghost.begin() + n_owned,
+                            particles.ghost.end(),
+                            0)
+                    == particles.ghost.end(),
+                  ExcInternalError());
+      // The ghost cells are those whose points lie in the cut tail.
+      std::vector<unsigned int> owned_cells;
+      owned_cells.reserve(particles.occupied_cells.size());
+      for (const unsigned int c : particles.occupied_cells)
+        if (particles.cell_begin[c] < n_owned)
+          owned_cells.push_back(c);
+        else
+          particles.cell_begin[c] = particles.cell_end[c] = 0;
+      particles.occupied_cells.swap(owned_cells);
+      auto cut = [n_owned](auto &v) { v.resize(n_owned); };
+      cut(particles.position);
+      cut(particles.velocity);
+      if (particles.has_affine_velocity())
+        cut(particles.affine_velocity);
+      cut(particles.stress);
+      cut(particles.mass);
+      cut(particles.volume);
+      cut(particles.reference_volume);
+      cut(particles.cell);
+      cut(particles.material_id);
+      cut(particles.body_id);
+      cut(particles.free_surface);
+      cut(particles.id);
+      particles.ghost.clear();
+    }
+
+
+
+    template <int dim>
+    void
     migrate(const DomainPartition<dim> &partition,
             ParticleStore<dim>         &particles)
     {
       if (partition.n_ranks() == 1)
         return;
+      drop_ghosts(particles);
       std::map<unsigned int, std::vector<char>> send;
       std::vector<std::uint8_t>                 flag(particles.size(), 0);
+      bool                                      leaving = false;
       for (unsigned int p = 0; p < particles.size(); ++p)
-        {
-          if (!particles.ghost.empty() && particles.ghost[p])
-            flag[p] = 1;
-          else if (partition.owner(particles.cell[p]) != partition.rank())
-            {
-              pack(particles, p, send[partition.owner(particles.cell[p])]);
-              flag[p] = 1;
-            }
-        }
+        if (partition.owner(particles.cell[p]) != partition.rank())
+          {
+            pack(particles, p, send[partition.owner(particles.cell[p])]);
+            flag[p] = leaving = true;
+          }
       const auto received
         = Utilities::MPI::some_to_some(partition.get_communicator(), send);
-      particles.remove_flagged(flag);
-      particles.ghost.clear();
+      if (leaving)
+        particles.remove_flagged(flag);
       for (const auto &[rank, buffer] : received)
         unpack(buffer, 0, particles);
       particles.sort_by_cell(particles.cell_begin.size());

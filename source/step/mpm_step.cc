@@ -1,3 +1,4 @@
+#include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/step/mpm_step.h>
 
 #include <cmath>
@@ -274,6 +275,10 @@ namespace fsgmpm
           synchronise_smoothing([](const MaterialOptions &o) { return o.anp; });
         });
     }
+    // MPI: the ghost copies have served every nodal sum; their motion is
+    // their owners'.
+    if (partition != nullptr)
+      DistributedPoints::drop_ghosts(particles);
     {
       TimerOutput::Scope scope(timer, "position_update");
       result.displacement_ratio

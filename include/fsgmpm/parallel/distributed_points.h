@@ -36,9 +36,19 @@ namespace fsgmpm
                ParticleStore<dim>         &particles);
 
     /**
-     * After a step: drop the ghost copies, send the points that moved into
-     * another process's cells to it with their whole state, and receive
-     * those that moved into ours. Sorted afterwards.
+     * Drop the ghost copies that add_ghosts() appended, before the
+     * positions are updated (the copies have served every nodal sum; their
+     * motion is their owners'). The arrays are cut back, as no stage
+     * reorders points before relocate: no copying.
+     */
+    template <int dim>
+    void
+    drop_ghosts(ParticleStore<dim> &particles);
+
+    /**
+     * After a step: drop the ghost copies (if still held), send the points that
+     * moved into another process's cells to it with their whole state, and
+     * receive those that moved into ours. Sorted afterwards.
      */
     template <int dim>
     void
