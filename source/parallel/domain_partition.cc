@@ -136,30 +136,29 @@ namespace fsgmpm
     std::vector<MPI_Request> requests;
     requests.reserve(2 * neighbours.size());
     const int tag = 1507;
-    for (unsigned int k = 0; k < neighbours.size(); ++k)
-      if (!receive_buffers[k].empty())
+    // Receives first, so that the sends find them posted.
+    for (const bool receive : {true, false})
+      for (unsigned int k = 0; k < neighbours.size(); ++k)
         {
+          std::vector<char> &buffer
+            = receive ? receive_buffers[k] : send_buffers[k];
+          if (buffer.empty())
+            continue;
           requests.emplace_back();
-          const int ierr = MPI_Irecv(receive_buffers[k].data(),
-                                     receive_buffers[k].size(),
-                                     MPI_BYTE,
-                                     neighbours[k].rank,
-                                     tag,
-                                     comm,
-                                     &requests.back());
-          AssertThrowMPI(ierr);
-        }
-    for (unsigned int k = 0; k < neighbours.size(); ++k)
-      if (!send_buffers[k].empty())
-        {
-          requests.emplace_back();
-          const int ierr = MPI_Isend(send_buffers[k].data(),
-                                     send_buffers[k].size(),
-                                     MPI_BYTE,
-                                     neighbours[k].rank,
-                                     tag,
-                                     comm,
-                                     &requests.back());
+          const int ierr = receive ? MPI_Irecv(buffer.data(),
+                                               buffer.size(),
+                                               MPI_BYTE,
+                                               neighbours[k].rank,
+                                               tag,
+                                               comm,
+                                               &requests.back())
+                                   : MPI_Isend(buffer.data(),
+                                               buffer.size(),
+                                               MPI_BYTE,
+                                               neighbours[k].rank,
+                                               tag,
+                                               comm,
+                                               &requests.back());
           AssertThrowMPI(ierr);
         }
     const int ierr
