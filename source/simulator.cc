@@ -614,8 +614,11 @@ namespace fsgmpm
         return false;
       }
 
+    // MPI: rebalance at the start of a step, so that between steps (output)
+    // every process still has exact nodal values around its points.
     if (partition)
       timed(mpi_points_stage, [&] {
+        rebalance();
         const unsigned int n_owned = particles.size();
         DistributedPoints::add_ghosts(*partition, particles);
         halo_fraction
@@ -660,7 +663,6 @@ namespace fsgmpm
           = Utilities::MPI::sum(g.damping_work_increment, comm);
         g.unbalanced_norm_sq = Utilities::MPI::sum(g.unbalanced_norm_sq, comm);
         g.external_norm_sq   = Utilities::MPI::sum(g.external_norm_sq, comm);
-        timed(mpi_points_stage, [&] { rebalance(); });
       }
     set_free_surface_fraction(result.free_surface);
     if (result.membrane_nodes_outside > 0)
@@ -800,11 +802,28 @@ namespace fsgmpm
           DistributedPoints::gather_on_root(*partition,
                                             particles,
                                             all_particles);
-          // The vorticity needs the nodal velocities, which rank 0 has
-          // only around its own cells: not written (zero) in MPI runs.
+          // The vorticity needs the nodal velocities around each point,
+          // which only its owner has: computed there, sent by point id.
+          std::vector<std::pair<unsigned int, double>> local(particles.size());
+          for (unsigned int p = 0; p < particles.size(); ++p)
+            local[p] = {particles.id[p],
+                        ParticleOutput<dim>::vorticity(*grid,
+                                                       nodes,
+                                                       particles.cell[p])};
+          const auto gathered
+            = Utilities::MPI::gather(partition->get_communicator(), local, 0);
           if (root)
-            output->write(
-              time, all_particles, *grid, nodes, membrane.get(), false);
+            {
+              std::vector<unsigned int> index(particles.next_id, 0);
+              for (unsigned int p = 0; p < all_particles.size(); ++p)
+                index[all_particles.id[p]] = p;
+              std::vector<double> vorticity(all_particles.size(), 0.);
+              for (const auto &from : gathered)
+                for (const auto &[id, omega] : from)
+                  vorticity[index[id]] = omega;
+              output->write(
+                time, all_particles, *grid, nodes, membrane.get(), &vorticity);
+            }
         }
     };
     if (resumed)

@@ -255,7 +255,8 @@ namespace fsgmpm
     n_global_particles() const;
     /// MPI: split the cells again if the points are out of balance
     /// (Simulation/Repartition imbalance) and move the points to their new
-    /// owners. Between steps (no ghosts held).
+    /// owners. At the start of a step (no ghosts held; the output between
+    /// steps needs the partition the nodal values were computed with).
     void
     rebalance();
 

@@ -19,10 +19,31 @@ namespace fsgmpm
   } // namespace
 
   template <int dim>
+  double
+  ParticleOutput<dim>::vorticity(const BackgroundGrid<dim> &grid,
+                                 const NodalFields<dim>    &nodes,
+                                 const unsigned int         c)
+  {
+    // Linear simplex: grad v = sum_i v_i (x) grad N_i is constant in the
+    // cell; omega_z = dv_y/dx - dv_x/dy.
+    double omega = 0;
+    for (unsigned int k = 0; k < dim + 1; ++k)
+      {
+        const auto &v = nodes.velocity[grid.cell_nodes[c][k]];
+        const auto &g = grid.shape_gradients[c][k];
+        omega += v[1] * g[0] - v[0] * g[1];
+      }
+    return omega;
+  }
+
+
+
+  template <int dim>
   void
   ParticleOutput<dim>::build_patches(const ParticleStore<dim>  &particles,
                                      const BackgroundGrid<dim> *grid,
-                                     const NodalFields<dim>    *nodes)
+                                     const NodalFields<dim>    *nodes,
+                                     const std::vector<double> *vorticity)
   {
     const unsigned int n_fields = dim + n_stress_components(dim) + 8;
     patches.resize(particles.size());
@@ -51,19 +72,12 @@ namespace fsgmpm
         patch.data(f++, 0) = particles.material_id[p];
         patch.data(f++, 0) = particles.body_id[p];
         patch.data(f++, 0) = particles.free_surface[p];
-        // Linear simplex: grad v = sum_i v_i (x) grad N_i is constant in
-        // the cell; omega_z = dv_y/dx - dv_x/dy.
-        double omega = 0;
-        if (grid != nullptr && nodes != nullptr)
-          {
-            const unsigned int c = particles.cell[p];
-            for (unsigned int k = 0; k < dim + 1; ++k)
-              {
-                const auto &v = nodes->velocity[grid->cell_nodes[c][k]];
-                const auto &g = grid->shape_gradients[c][k];
-                omega += v[1] * g[0] - v[0] * g[1];
-              }
-          }
+        double omega       = 0;
+        if (vorticity != nullptr)
+          omega = (*vorticity)[p];
+        else if (grid != nullptr && nodes != nullptr)
+          omega
+            = ParticleOutput<dim>::vorticity(*grid, *nodes, particles.cell[p]);
         patch.data(f++, 0) = omega;
         // The pressure of the projected stress field, as the mean of its dim
         // normal components (in 2D the in-plane mean, as the grid sees no

@@ -40,14 +40,12 @@ namespace fsgmpm
                         const BackgroundGrid<dim> &grid,
                         const NodalFields<dim>    &nodes,
                         const Membrane<dim>       *membrane,
-                        const bool                 nodal_fields)
+                        const std::vector<double> *vorticity)
   {
     const std::string &dir = settings.directory;
     if (settings.write_particles)
       {
-        particle_output.build_patches(particles,
-                                      &grid,
-                                      nodal_fields ? &nodes : nullptr);
+        particle_output.build_patches(particles, &grid, &nodes, vorticity);
         if (settings.hdf5)
           particle_output.write_xdmf(particle_xdmf, time);
         else

@@ -117,9 +117,9 @@ namespace fsgmpm
         "1.2",
         Patterns::Double(0),
         "MPI runs: split the cells again (METIS, weighted by the points per "
-        "cell) after a step at which the most loaded process holds more "
-        "than this many times the mean number of points (0: never; values "
-        "in (0, 1) are refused). The results do not depend on it.");
+        "cell) before a step if the most loaded process holds more than "
+        "this many times the mean number of points (0: never; values in "
+        "(0, 1) are refused). The results do not depend on it.");
     }
     prm.leave_subsection();
 

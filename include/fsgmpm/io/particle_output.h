@@ -28,9 +28,19 @@ namespace fsgmpm
     /// the nodal velocities of each point's cell (paper Fig. 12), zero
     /// without.
     void
+    /// With @p vorticity (one value per point, e.g. computed where the
+    /// nodal velocities are), that is written instead.
     build_patches(const ParticleStore<dim>  &particles,
-                  const BackgroundGrid<dim> *grid  = nullptr,
-                  const NodalFields<dim>    *nodes = nullptr);
+                  const BackgroundGrid<dim> *grid      = nullptr,
+                  const NodalFields<dim>    *nodes     = nullptr,
+                  const std::vector<double> *vorticity = nullptr);
+
+    /// The vorticity omega_z = dv_y/dx - dv_x/dy of the nodal velocity
+    /// field in cell @p c (constant on a linear simplex).
+    static double
+    vorticity(const BackgroundGrid<dim> &grid,
+              const NodalFields<dim>    &nodes,
+              const unsigned int         c);
 
     /// The patches as a step of an HDF5 + XDMF series (Output/Format =
     /// hdf5): the same fields as the VTU files, velocity as a 3-vector.

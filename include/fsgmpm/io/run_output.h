@@ -55,16 +55,16 @@ namespace fsgmpm
     void
     remove_previous_output() const;
 
-    /// Write the state at @p time (@p membrane may be null). Without
-    /// @p nodal_fields the points' fields that need the nodal velocities
-    /// (vorticity) are written as zero.
+    /// Write the state at @p time (@p membrane may be null). With
+    /// @p vorticity (MPI: gathered from the processes that own the points)
+    /// the points' vorticity is taken from it, not from @p nodes.
     void
     write(const double               time,
           const ParticleStore<dim>  &particles,
           const BackgroundGrid<dim> &grid,
           const NodalFields<dim>    &nodes,
           const Membrane<dim>       *membrane,
-          const bool                 nodal_fields = true);
+          const std::vector<double> *vorticity = nullptr);
 
     State
     state() const;
