@@ -3,50 +3,35 @@
 
 Usage: compare_vtu.py <reference.vtu> <result.vtu> [--skip NAME]...
 
-Decodes every binary (zlib-compressed, base64) DataArray and requires the
-bytes to be identical, except the arrays named with --skip. Exits 1 and
-names the arrays that differ or are missing.
+Reads every array with doc/scripts/read_vtu.py and requires the values to
+be identical (bit for bit, as written), except the arrays named with
+--skip. Exits 1 and names the arrays that differ or are missing.
 """
-import base64
-import re
-import struct
+import os
 import sys
-import zlib
 
+import numpy as np
 
-def arrays(path):
-    text = open(path).read()
-    found = {}
-    pattern = (r'<DataArray type="(\w+)"(?: Name="([^"]*)")?[^>]*'
-               r'format="binary">\s*(\S+)\s*</DataArray>')
-    for i, m in enumerate(re.finditer(pattern, text)):
-        kind, name, data = m.groups()
-        # vtkZLibDataCompressor: a base64 header of uint32 (blocks, block
-        # size, last block size, compressed sizes), then the base64 blocks.
-        n_blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
-        header_chars = ((4 * (3 + n_blocks) + 2) // 3) * 4
-        header = base64.b64decode(data[:header_chars])
-        sizes = struct.unpack("<%dI" % n_blocks, header[12:12 + 4 * n_blocks])
-        body = base64.b64decode(data[header_chars:])
-        raw, offset = b"", 0
-        for size in sizes:
-            raw += zlib.decompress(body[offset:offset + size])
-            offset += size
-        found[name or "%s array %d" % (kind, i)] = raw
-    return found
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "doc", "scripts"))
+from read_vtu import read_vtu  # noqa: E402
 
 
 def main(argv):
     skip = [argv[i + 1] for i in range(len(argv) - 1) if argv[i] == "--skip"]
     files = [a for i, a in enumerate(argv[1:], 1)
              if a != "--skip" and argv[i - 1] != "--skip"]
-    reference, result = arrays(files[0]), arrays(files[1])
-    bad = [k for k in reference if k not in skip and reference[k] != result.get(k)]
+    reference, result = read_vtu(files[0]), read_vtu(files[1])
+    compared = [k for k in reference if k not in skip]
+    bad = [k for k in compared
+           if k not in result
+           or reference[k].tobytes() != result[k].tobytes()
+           or reference[k].dtype != result[k].dtype]
     if bad:
         print("  %s: differs in %s" % (files[1], ", ".join(bad)))
         return 1
-    print("  %s: %d arrays identical" % (files[1].split("/")[-1],
-                                        len([k for k in reference if k not in skip])))
+    print("  %s: %d arrays identical" % (os.path.basename(files[1]),
+                                        len(compared)))
     return 0
 
 
