@@ -202,18 +202,13 @@ namespace fsgmpm
                                "process yet (this run has "
                              + n_ranks + "); run it with one process."));
     };
-    refuse(!membrane, "A membrane (Membrane/Enabled)");
-    refuse(params.checkpoint_interval == 0,
-           "Checkpointing (Output/Checkpoint interval > 0)");
-    refuse(params.local_damping == 0,
-           "Local damping (Damping/Local damping coefficient > 0)");
     refuse(params.stress_integration
              != Stages::StressIntegration::nodal_projection,
            "Simulation/Stress integration = nodal projection");
     refuse(!params.write_grid, "Grid output (Output/Write grid = true)");
     refuse(params.output_format != "hdf5",
            "HDF5 output (Output/Format = hdf5)");
-    const std::string others = scene_monitors->not_maxima();
+    const std::string others = scene_monitors->not_distributed();
     refuse(others.empty(), "The scene monitor(s) " + others);
 
     partition = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
@@ -528,8 +523,12 @@ namespace fsgmpm
   void
   Simulator<dim>::compute_monitors()
   {
-    EnergyBalance::compute_energies(
-      particles, materials, membrane.get(), params.gravity, monitors);
+    // MPI: every process holds the whole membrane; process 0 adds it.
+    EnergyBalance::compute_energies(particles,
+                                    materials,
+                                    root ? membrane.get() : nullptr,
+                                    params.gravity,
+                                    monitors);
     if (partition)
       {
         // Sums over the processes: these energies may differ from a serial
@@ -778,7 +777,10 @@ namespace fsgmpm
       std::vector<double> row    = {time, double(step), time_step_control.dt()};
       row.insert(row.end(), values.begin(), values.end() - (detecting ? 0 : 1));
       std::vector<double> scene
-        = scene_monitors->evaluate(particles, membrane.get());
+        = scene_monitors->evaluate(particles,
+                                   membrane.get(),
+                                   partition ? partition->get_communicator()
+                                             : MPI_COMM_SELF);
       if (partition)
         {
           const std::vector<double> local = scene;
@@ -900,7 +902,7 @@ namespace fsgmpm
         && termination != Termination::error)
       write_checkpoint(wall - previous_wall_seconds);
     monitor_file.reset();
-    if (membrane)
+    if (membrane && root)
       write_membrane_shape_csv(*membrane, dir + "/membrane_shape.csv");
     write_summary(wall);
     if (verbose)

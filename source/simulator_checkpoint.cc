@@ -9,6 +9,7 @@
 #include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/io/state_checkpoint.h>
+#include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/simulator.h>
 #include <fsgmpm/step/stages.h>
 
@@ -28,15 +29,16 @@ namespace fsgmpm
     namespace fs = std::filesystem;
 
     /// Parameters a restart may change: where and what it writes, how far
-    /// it runs, and on how many threads. Everything else is the physics of
-    /// the checkpointed run.
+    /// it runs, and on how many threads and processes. Everything else is
+    /// the physics of the checkpointed run.
     bool
     may_change_on_restart(const std::string &path)
     {
       return path.rfind("Output/", 0) == 0 || path == "Simulation/End time"
              || path == "Simulation/Maximum number of steps"
              || path == "Simulation/Termination"
-             || path == "Simulation/Number of threads";
+             || path == "Simulation/Number of threads"
+             || path == "Simulation/Repartition imbalance";
     }
 
     std::string
@@ -95,11 +97,25 @@ namespace fsgmpm
   void
   Simulator<dim>::write_checkpoint(const double wall_seconds)
   {
+    const auto start = std::chrono::steady_clock::now();
+    // MPI: process 0 writes the points of all processes, in the serial
+    // order, and the partition; everything else is the same everywhere.
+    ParticleStore<dim> all_particles;
+    if (partition)
+      {
+        DistributedPoints::gather_on_root(*partition, particles, all_particles);
+        if (!root)
+          {
+            checkpoint_seconds += std::chrono::duration<double>(
+                                    std::chrono::steady_clock::now() - start)
+                                    .count();
+            return;
+          }
+      }
     const fs::path directory
       = fs::path(params.output_directory) / "checkpoints";
     fs::create_directories(directory);
-    const auto start = std::chrono::steady_clock::now();
-    char       name[40];
+    char name[40];
     std::snprintf(name, sizeof(name), "checkpoint_%010u", step);
     std::string file_name;
     {
@@ -136,7 +152,14 @@ namespace fsgmpm
       out.put("cost/particle_updates", double(particle_updates));
       out.put("cost/checkpoint_seconds", checkpoint_seconds);
 
-      StateCheckpoint::save(out, particles);
+      StateCheckpoint::save(out, partition ? all_particles : particles);
+      if (partition)
+        {
+          out.put("mpi/ranks", std::vector<unsigned int>{partition->n_ranks()});
+          out.put("mpi/cell_owner", partition->owners());
+          out.put("mpi/repartitions",
+                  std::vector<unsigned int>{n_repartitions});
+        }
       if (membrane)
         {
           StateCheckpoint::save(out, *membrane);
@@ -210,9 +233,9 @@ namespace fsgmpm
                   "checkpointed run ("
                   + std::to_string(n) + " line(s)):" + differences
                   + "\nA restart may change only Output/*, Simulation/End "
-                    "time, Maximum number of steps, Termination and Number "
-                    "of threads; run the checkpointed scene's prm with "
-                    "--restart."));
+                    "time, Maximum number of steps, Termination, Number "
+                    "of threads and Repartition imbalance; run the "
+                    "checkpointed scene's prm with --restart."));
   }
 
 
@@ -259,11 +282,37 @@ namespace fsgmpm
         StateCheckpoint::load(in, *membrane);
         StateCheckpoint::load(in, *mpm_step->get_membrane_coupling());
       }
+    if (partition)
+      {
+        // Every process read all points; each keeps its own. With as many
+        // processes as the checkpointed run, its partition (the same
+        // cells, so the same sums, as the uninterrupted run); otherwise a
+        // new one.
+        const unsigned int ranks
+          = in.has("mpi/ranks") ? in.uints("mpi/ranks").at(0) : 1;
+        if (ranks == partition->n_ranks())
+          {
+            partition->set_owners(in.uints("mpi/cell_owner"));
+            n_repartitions = in.uints("mpi/repartitions").at(0);
+          }
+        else
+          {
+            std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
+            for (const unsigned int c : particles.occupied_cells)
+              points_per_cell[c]
+                = particles.cell_end[c] - particles.cell_begin[c];
+            partition->partition(points_per_cell);
+          }
+        DistributedPoints::keep_owned(*partition, particles);
+        DistributedPoints::add_ghosts(*partition, particles);
+      }
     // The nodal fields of the first step after the restart are rebuilt
     // from the points, as every step rebuilds them.
     Stages::p2g(*grid, particles, nodes, params.stress_integration);
     if (membrane)
       mpm_step->get_membrane_coupling()->p2g(nodes);
+    if (partition)
+      DistributedPoints::drop_ghosts(particles);
   }
 
 
@@ -272,9 +321,6 @@ namespace fsgmpm
   void
   Simulator<dim>::restart(const std::string &directory)
   {
-    AssertThrow(!partition,
-                ExcMessage("--restart does not run on more than one MPI "
-                           "process yet; restart with one process."));
     const fs::path dir   = fs::path(directory) / "checkpoints";
     const auto     files = checkpoint_files(dir);
     AssertThrow(!files.empty(),
@@ -288,13 +334,16 @@ namespace fsgmpm
         std::unique_ptr<CheckpointReader> in;
         try
           {
-            in = std::make_unique<CheckpointReader>(file.string());
+            in = std::make_unique<CheckpointReader>(
+              file.string(),
+              partition ? partition->get_communicator() : MPI_COMM_SELF);
           }
         catch (const ExceptionBase &e)
           {
             damaged += "\n  " + message_of(e);
-            std::cerr << "fsgmpm: warning: " << message_of(e)
-                      << " Trying the one before it." << std::endl;
+            if (root)
+              std::cerr << "fsgmpm: warning: " << message_of(e)
+                        << " Trying the one before it." << std::endl;
             continue;
           }
         check_checkpoint_parameters(*in);
@@ -307,7 +356,7 @@ namespace fsgmpm
                                  "number of steps; raise them to continue."));
         params.output_directory = directory;
         resumed                 = true;
-        if (!params.quiet)
+        if (!params.quiet && root)
           std::cout << "fsgmpm: restarting from " << file.string()
                     << " (t = " << time << " s, step " << step << ")"
                     << std::endl;

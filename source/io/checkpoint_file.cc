@@ -1,4 +1,10 @@
 #include <deal.II/base/hdf5.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <fsgmpm/io/hdf5_setup.h>
 
@@ -196,8 +202,41 @@ namespace fsgmpm
 
 
 
-  CheckpointReader::CheckpointReader(const std::string &file_name)
+  CheckpointReader::CheckpointReader(const std::string &file_name,
+                                     const MPI_Comm     communicator)
     : file_name(file_name)
+  {
+    if (!Utilities::MPI::job_supports_mpi()
+        || Utilities::MPI::n_mpi_processes(communicator) == 1)
+      {
+        read();
+        return;
+      }
+    // Process 0 reads the file and sends its entries (or why it cannot be
+    // read) to the others: HDF5 locks a file that one process has open.
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      try
+        {
+          read();
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          error = Utilities::trim(info.str());
+        }
+    error = Utilities::MPI::broadcast(communicator, error);
+    AssertThrow(error.empty(), ExcMessage(error));
+    double_data = Utilities::MPI::broadcast(communicator, double_data);
+    uint_data   = Utilities::MPI::broadcast(communicator, uint_data);
+    text_data   = Utilities::MPI::broadcast(communicator, text_data);
+  }
+
+
+
+  void
+  CheckpointReader::read()
   {
     // The name ends in _HASH.h5, the hash of the file's bytes.
     const auto underscore = file_name.rfind('_');

@@ -50,6 +50,10 @@ namespace fsgmpm
           values[n_bodies + particles.body_id[p]]
             += 0.5 * particles.mass[p] * particles.velocity[p].norm_square();
         }
+    const std::vector<double> local = values;
+    Utilities::MPI::sum(make_array_view(local),
+                        context.communicator,
+                        make_array_view(values));
     return values;
   }
 

@@ -34,7 +34,8 @@ namespace fsgmpm
                     const ParticleStore<dim> &particles,
                     const double              contact_tolerance,
                     const double              strip_width,
-                    const unsigned int        fill_body)
+                    const unsigned int        fill_body,
+                    const MPI_Comm            communicator)
   {
     constexpr double big = std::numeric_limits<double>::max();
     double           x0 = big, x1 = -big, y0 = big, y1 = -big;
@@ -80,6 +81,19 @@ namespace fsgmpm
         syy += y * y;
         syp += y * p;
       }
+    {
+      const std::vector<double> local = {n, sy, sp, syy, syp, volume};
+      std::vector<double>       global(local.size());
+      Utilities::MPI::sum(make_array_view(local),
+                          communicator,
+                          make_array_view(global));
+      n      = global[0];
+      sy     = global[1];
+      sp     = global[2];
+      syy    = global[3];
+      syp    = global[4];
+      volume = global[5];
+    }
     double p_top = 0, p_bottom = 0;
     if (n >= 2)
       {
@@ -125,6 +139,7 @@ namespace fsgmpm
             outside += !inside_polygon(poly,
                                        Point<2>(particles.position[q][0],
                                                 particles.position[q][1]));
+        outside = Utilities::MPI::sum(outside, communicator);
       }
 
     return {{"particles_outside", outside},
@@ -190,7 +205,8 @@ namespace fsgmpm
                                           context.particles,
                                           contact_tolerance,
                                           strip_width,
-                                          fill_body);
+                                          fill_body,
+                                          context.communicator);
     std::vector<double> row;
     for (const auto &name : membrane_monitor_names())
       row.push_back(values.at(name));
@@ -202,13 +218,15 @@ namespace fsgmpm
                        const ParticleStore<2> &,
                        const double,
                        const double,
-                       const unsigned int);
+                       const unsigned int,
+                       const MPI_Comm);
   template std::map<std::string, double>
   membrane_monitors<3>(const Membrane<3> &,
                        const ParticleStore<3> &,
                        const double,
                        const double,
-                       const unsigned int);
+                       const unsigned int,
+                       const MPI_Comm);
   template class GeotubeMonitor<2>;
   template class GeotubeMonitor<3>;
 

@@ -118,11 +118,12 @@ namespace fsgmpm
 
   template <int dim>
   std::string
-  SceneMonitors<dim>::not_maxima() const
+  SceneMonitors<dim>::not_distributed() const
   {
     std::string names;
     for (const auto &m : monitors)
-      if (!m.second->values_are_maxima())
+      if (!m.second->values_are_maxima()
+          && !m.second->combines_over_processes())
         names += (names.empty() ? "" : ", ") + m.first;
     return names;
   }
@@ -144,9 +145,10 @@ namespace fsgmpm
   template <int dim>
   std::vector<double>
   SceneMonitors<dim>::evaluate(const ParticleStore<dim> &particles,
-                               const Membrane<dim>      *membrane) const
+                               const Membrane<dim>      *membrane,
+                               const MPI_Comm            communicator) const
   {
-    const MonitorContext<dim>        context{particles, membrane};
+    const MonitorContext<dim>        context{particles, membrane, communicator};
     std::vector<std::vector<double>> values;
     for (unsigned int i = 0; i < monitors.size(); ++i)
       {

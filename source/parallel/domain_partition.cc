@@ -53,6 +53,26 @@ namespace fsgmpm
           = MPI_Bcast(cell_owner.data(), n_cells, MPI_UNSIGNED, 0, comm);
         AssertThrowMPI(ierr);
       }
+    set_owners(cell_owner);
+  }
+
+
+
+  template <int dim>
+  void
+  DomainPartition<dim>::set_owners(const std::vector<unsigned int> &owners)
+  {
+    const unsigned int n_cells = grid.n_cells();
+    AssertThrow(owners.size() == n_cells
+                  && std::all_of(owners.begin(),
+                                 owners.end(),
+                                 [&](const unsigned int q) {
+                                   return q < n_processes;
+                                 }),
+                ExcMessage("The cell owners do not fit this mesh and this "
+                           "number of processes."));
+    if (&owners != &cell_owner)
+      cell_owner = owners;
 
     // The cells around every node (CSR).
     const unsigned int        n_nodes = grid.n_nodes();

@@ -8,12 +8,13 @@ namespace fsgmpm
   {
     template <int dim>
     GridUpdateResult
-    grid_update(const NodalConstraints<dim>     &constraints,
-                const Tensor<1, dim>            &gravity,
-                const double                     alpha,
-                const double                     dt,
-                NodalFields<dim>                &nodes,
-                const std::vector<std::uint8_t> *counted_nodes)
+    grid_update(const NodalConstraints<dim>         &constraints,
+                const Tensor<1, dim>                &gravity,
+                const double                         alpha,
+                const double                         dt,
+                NodalFields<dim>                    &nodes,
+                const std::vector<std::uint8_t>     *counted_nodes,
+                const std::function<double(double)> &sum_over_processes)
     {
       GridUpdateResult r;
       // The damping work is booked on the nodes that carry a share of the
@@ -23,11 +24,22 @@ namespace fsgmpm
       // in the 3D geotube slab booked -426 J in one step, which tripped the
       // energy guard; the points' kinetic energy was 34 J).
       double mean_mass = 0;
-      if (alpha > 0 && !nodes.active_nodes.empty())
+      if (alpha > 0)
         {
+          double n_nodes = 0;
           for (const unsigned int i : nodes.active_nodes)
-            mean_mass += nodes.mass[i];
-          mean_mass /= nodes.active_nodes.size();
+            if (counted_nodes == nullptr || (*counted_nodes)[i])
+              {
+                mean_mass += nodes.mass[i];
+                n_nodes += 1;
+              }
+          if (sum_over_processes)
+            {
+              mean_mass = sum_over_processes(mean_mass);
+              n_nodes   = sum_over_processes(n_nodes);
+            }
+          if (n_nodes > 0)
+            mean_mass /= n_nodes;
         }
       const double light = 1e-4 * mean_mass;
       // Nodes with (almost) no mass carry no information; the remap of
@@ -90,13 +102,15 @@ namespace fsgmpm
                    const double,
                    const double,
                    NodalFields<2> &,
-                   const std::vector<std::uint8_t> *);
+                   const std::vector<std::uint8_t> *,
+                   const std::function<double(double)> &);
     template GridUpdateResult
     grid_update<3>(const NodalConstraints<3> &,
                    const Tensor<1, 3> &,
                    const double,
                    const double,
                    NodalFields<3> &,
-                   const std::vector<std::uint8_t> *);
+                   const std::vector<std::uint8_t> *,
+                   const std::function<double(double)> &);
   } // namespace Stages
 } // namespace fsgmpm

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace fsgmpm
 {
@@ -123,10 +124,17 @@ namespace fsgmpm
             }
         }
 
+    // MPI: the bound over the nodes this process counts (their masses and
+    // the points' stiffness around them are exact here); the caller takes
+    // the minimum over the processes. The fictitious inertia is set on all
+    // touched nodes: wherever this process's values are inexact, the grid
+    // update's result is overwritten or unused.
     double dt = std::numeric_limits<double>::max();
     for (unsigned int t = 0; t < touched.size(); ++t)
       {
-        const unsigned int            i = touched[t];
+        const unsigned int i = touched[t];
+        const bool         counted
+          = partition == nullptr || partition->counted_nodes()[i];
         const SymmetricTensor<2, dim> D
           = touched_stiffness[t]
             + touched_points[t] * unit_symmetric_tensor<dim>();
@@ -142,10 +150,44 @@ namespace fsgmpm
                 = std::max(0.25 * k * dt_floor * dt_floor - m, 0.);
               if (added > 0)
                 nodes.added_mass[i] += added * symmetrize(outer_product(e, e));
-              dt = std::min(dt, 2. * std::sqrt((m + added) / k));
+              if (counted)
+                dt = std::min(dt, 2. * std::sqrt((m + added) / k));
             }
       }
     return dt;
+  }
+
+
+
+  template <int dim>
+  template <typename Function>
+  std::vector<Tensor<1, dim>>
+  MembraneCoupling<dim>::from_cell_owners(const Function &f) const
+  {
+    // -0 is the exact neutral element of IEEE addition (x + -0 = x, also
+    // for x = +0), so the sum is the owner's value bit for bit.
+    Tensor<1, dim> neutral;
+    for (unsigned int d = 0; d < dim; ++d)
+      neutral[d] = -0.;
+    std::vector<Tensor<1, dim>> values(membrane.n_nodes(), neutral);
+    for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+      if (partition == nullptr
+          || partition->owner(membrane.cell[a]) == partition->rank())
+        values[a] = f(a);
+    if (partition != nullptr)
+      {
+        std::vector<double> local(dim * values.size()), global(local.size());
+        for (unsigned int a = 0; a < values.size(); ++a)
+          for (unsigned int d = 0; d < dim; ++d)
+            local[dim * a + d] = values[a][d];
+        Utilities::MPI::sum(make_array_view(std::as_const(local)),
+                            partition->get_communicator(),
+                            make_array_view(global));
+        for (unsigned int a = 0; a < values.size(); ++a)
+          for (unsigned int d = 0; d < dim; ++d)
+            values[a][d] = global[dim * a + d];
+      }
+    return values;
   }
 
 
@@ -169,8 +211,8 @@ namespace fsgmpm
   void
   MembraneCoupling<dim>::g2p(const NodalFields<dim> &nodes)
   {
-    for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
-      membrane.velocity[a] = grid_velocity(nodes, a);
+    membrane.velocity = from_cell_owners(
+      [&](const unsigned int a) { return grid_velocity(nodes, a); });
   }
 
 
@@ -196,11 +238,16 @@ namespace fsgmpm
   MembraneCoupling<dim>::update_positions(const NodalFields<dim> &nodes,
                                           const double            dt)
   {
+    const std::vector<Tensor<1, dim>> displacement
+      = from_cell_owners([&](const unsigned int a) {
+          Tensor<1, dim> dx = grid_velocity(nodes, a);
+          dx *= dt;
+          return dx;
+        });
     double ratio = 0;
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       {
-        Tensor<1, dim> dx = grid_velocity(nodes, a);
-        dx *= dt;
+        const Tensor<1, dim> &dx = displacement[a];
         membrane.position[a] += dx;
         ratio = std::max(ratio,
                          dx.norm() / grid.cell_min_altitude[membrane.cell[a]]);

@@ -33,6 +33,8 @@ namespace fsgmpm
   {
     membrane_coupling
       = std::make_unique<MembraneCoupling<dim>>(grid, m, split_length);
+    if (partition != nullptr)
+      membrane_coupling->attach_partition(*partition);
   }
 
 
@@ -144,6 +146,14 @@ namespace fsgmpm
     if (membrane_coupling)
       {
         TimerOutput::Scope scope(timer, "membrane");
+        // The points' bound over all processes: mass scaling's floor below
+        // must be the serial one.
+        if (partition != nullptr)
+          dt = Utilities::MPI::min(dt, partition->get_communicator());
+      }
+    if (membrane_coupling)
+      {
+        TimerOutput::Scope scope(timer, "membrane");
         // The nodes the membrane touches: the nodal bound with the
         // membrane's and the points' stiffness (which holds the points'
         // share there, so the smaller of the two bounds governs).
@@ -177,13 +187,18 @@ namespace fsgmpm
     constraints.set_time(new_time);
     {
       TimerOutput::Scope scope(timer, "grid_update");
-      result.grid = Stages::grid_update(constraints,
-                                        gravity,
-                                        settings.local_damping,
-                                        dt,
-                                        nodes,
-                                        partition ? &partition->counted_nodes()
-                                                  : nullptr);
+      result.grid = Stages::grid_update(
+        constraints,
+        gravity,
+        settings.local_damping,
+        dt,
+        nodes,
+        partition ? &partition->counted_nodes() : nullptr,
+        [this](const double x) {
+          return partition
+                   ? Utilities::MPI::sum(x, partition->get_communicator())
+                   : x;
+        });
       // The contact's dissipation is not booked as damping work: the nodal
       // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
       // guard only objects to energy gained.

@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Compare the point fields of two particle VTU files written by fsgmpm.
 
-Usage: compare_vtu.py <reference.vtu> <result.vtu> [--skip NAME]...
+Usage: compare_vtu.py <reference.vtu> <result.vtu> [--skip NAME]... [--quiet]
 
 Reads every array with doc/scripts/read_vtu.py and requires the values to
 be identical (bit for bit, as written), except the arrays named with
---skip. Exits 1 and names the arrays that differ or are missing.
+--skip. Exits 1 and names the arrays that differ or are missing; with
+--quiet prints nothing if all agree.
 """
 import os
 import sys
@@ -19,8 +20,9 @@ from read_vtu import read_vtu  # noqa: E402
 
 def main(argv):
     skip = [argv[i + 1] for i in range(len(argv) - 1) if argv[i] == "--skip"]
+    quiet = "--quiet" in argv
     files = [a for i, a in enumerate(argv[1:], 1)
-             if a != "--skip" and argv[i - 1] != "--skip"]
+             if a not in ("--skip", "--quiet") and argv[i - 1] != "--skip"]
     reference, result = read_vtu(files[0]), read_vtu(files[1])
     compared = [k for k in reference if k not in skip]
     bad = [k for k in compared
@@ -30,8 +32,9 @@ def main(argv):
     if bad:
         print("  %s: differs in %s" % (files[1], ", ".join(bad)))
         return 1
-    print("  %s: %d arrays identical" % (os.path.basename(files[1]),
-                                        len(compared)))
+    if not quiet:
+        print("  %s: %d arrays identical" % (os.path.basename(files[1]),
+                                            len(compared)))
     return 0
 
 

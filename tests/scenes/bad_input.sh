@@ -86,6 +86,7 @@ expect_error "geotube monitor without a membrane" "Scene monitors: height \(scen
 w="$2/../prm/water_column_collapse_n2.prm"
 expect_error "gate off the grid lines" "Moving wall/Lower corner and Upper corner: the wall's plane x = 0.115 holds no grid node" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Lower corner=0.115, 0" --set "Moving wall/Upper corner=0.115, 0.3"
 expect_error "gate pushed along its normal" "Moving wall/Velocity history: <0: 1 2> moves the wall along its normal" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Velocity history=0: 1 2"
+expect_error "repartition imbalance below 1" "Simulation/Repartition imbalance is the ratio .* at least 1 .*got 0.5" --set "Simulation/Repartition imbalance=0.5"
 
 echo "bad input: $passed passed, $failures failed"
 [ $failures -eq 0 ]

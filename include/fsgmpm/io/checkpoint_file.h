@@ -2,6 +2,7 @@
 #define fsgmpm_io_checkpoint_file_h
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <cstdint>
 #include <cstring>
@@ -91,7 +92,11 @@ namespace fsgmpm
   class CheckpointReader
   {
   public:
-    explicit CheckpointReader(const std::string &file_name);
+    /// With more than one process in @p communicator, process 0 reads
+    /// the file and sends its entries to the others (which throw the same
+    /// exception if it cannot be read).
+    explicit CheckpointReader(const std::string &file_name,
+                              const MPI_Comm     communicator = MPI_COMM_SELF);
 
     bool
     has(const std::string &name) const;
@@ -118,6 +123,10 @@ namespace fsgmpm
     }
 
   private:
+    /// Checks the hash and reads every entry of the file.
+    void
+    read();
+
     std::string                                      file_name;
     std::map<std::string, std::vector<double>>       double_data;
     std::map<std::string, std::vector<unsigned int>> uint_data;

@@ -33,6 +33,12 @@ namespace fsgmpm
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
 
+    bool
+    combines_over_processes() const override
+    {
+      return true;
+    }
+
   private:
     unsigned int n_bodies;
   };

@@ -20,7 +20,9 @@ namespace fsgmpm
    * strip_width/2, evaluated at the membrane's top and bottom),
    * membrane_length, enclosed_area (2D), fluid_volume (sum of particle
    * volumes; per metre in 2D) and particles_outside, the last three over
-   * the points of body @p fill_body only (the pressure strip too).
+   * the points of body @p fill_body only (the pressure strip too). MPI:
+   * the sums over the points are taken over @p communicator (each process
+   * holds its own points and the whole membrane).
    */
   template <int dim>
   std::map<std::string, double>
@@ -28,7 +30,8 @@ namespace fsgmpm
                     const ParticleStore<dim> &particles,
                     const double              contact_tolerance,
                     const double              strip_width,
-                    const unsigned int        fill_body = 0);
+                    const unsigned int        fill_body    = 0,
+                    const MPI_Comm            communicator = MPI_COMM_SELF);
 
   /// Names of the columns membrane_monitors() provides.
   const std::vector<std::string> &
@@ -66,6 +69,12 @@ namespace fsgmpm
 
     bool
     needs_membrane() const override
+    {
+      return true;
+    }
+
+    bool
+    combines_over_processes() const override
     {
       return true;
     }

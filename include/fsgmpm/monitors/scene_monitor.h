@@ -1,6 +1,7 @@
 #ifndef fsgmpm_monitors_scene_monitor_h
 #define fsgmpm_monitors_scene_monitor_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
@@ -39,6 +40,9 @@ namespace fsgmpm
     const ParticleStore<dim> &particles;
     /// The scene's membrane, or nullptr if it has none.
     const Membrane<dim> *membrane;
+    /// The processes that share the points (MPI; each holds its own points
+    /// and the whole membrane); MPI_COMM_SELF in a serial run.
+    MPI_Comm communicator = MPI_COMM_SELF;
   };
 
   /**
@@ -105,6 +109,16 @@ namespace fsgmpm
     /// than one process yet.
     virtual bool
     values_are_maxima() const
+    {
+      return false;
+    }
+
+    /// True if evaluate() combines its sums over the points over
+    /// MonitorContext::communicator itself, so that every process returns
+    /// the global values. A monitor that neither does this nor has
+    /// values_are_maxima() cannot run on more than one process yet.
+    virtual bool
+    combines_over_processes() const
     {
       return false;
     }

@@ -47,18 +47,23 @@ namespace fsgmpm
     }
 
     /// The columns' values (the membrane is nullptr if there is none).
+    /// MPI: @p communicator holds the processes that share the points;
+    /// the monitors that combine_over_processes() return global values,
+    /// the maxima are the caller's to combine.
     std::vector<double>
     evaluate(const ParticleStore<dim> &particles,
-             const Membrane<dim>      *membrane = nullptr) const;
+             const Membrane<dim>      *membrane     = nullptr,
+             const MPI_Comm            communicator = MPI_COMM_SELF) const;
 
     /// True if a selected monitor needs a membrane.
     bool
     needs_membrane() const;
 
-    /// The selected monitors whose values are not maxima (which cannot be
-    /// combined over MPI processes yet), comma separated; empty if none.
+    /// The selected monitors that can not run on more than one MPI process
+    /// (neither maxima nor combining over the processes themselves), comma
+    /// separated; empty if none.
     std::string
-    not_maxima() const;
+    not_distributed() const;
 
     /// The selected monitor registered as @p name; throws, naming the
     /// selected ones, if the scene did not select it.

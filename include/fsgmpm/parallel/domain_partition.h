@@ -51,6 +51,19 @@ namespace fsgmpm
     void
     partition(const std::vector<unsigned int> &points_per_cell);
 
+    /// Take @p owners (the owning process of every cell, the same on all
+    /// processes) as the partition: a checkpoint's, so that a restarted
+    /// run splits the cells as the interrupted one did.
+    void
+    set_owners(const std::vector<unsigned int> &owners);
+
+    /// The owning process of every cell.
+    const std::vector<unsigned int> &
+    owners() const
+    {
+      return cell_owner;
+    }
+
     unsigned int
     n_ranks() const
     {

@@ -6,6 +6,7 @@
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/membrane/membrane.h>
+#include <fsgmpm/parallel/domain_partition.h>
 
 #include <array>
 #include <vector>
@@ -28,6 +29,16 @@ namespace fsgmpm
    * p2g() and used by every other stage of the step. The membrane is small
    * (10^2-10^4 nodes against 10^5 points), so the stages run serially.
    * MpmStep owns one when a membrane is attached.
+   *
+   * MPI (attach_partition()): every process holds the whole membrane and
+   * adds all of it to its nodes (p2g, remap), so every node it computes
+   * exactly gets the membrane's full share. What reads grid values (the
+   * nodes' velocities and displacements) is computed by the owner of the
+   * node's cell, the only process whose values there are exact, and summed
+   * over the processes (the others contribute zeros, so the sum is the
+   * owner's value bit for bit); the nodal time-step bound is the minimum
+   * over the nodes each process counts. Everything else (slip, splits,
+   * location, element forces) runs on identical data on every process.
    */
   template <int dim>
   class MembraneCoupling
@@ -38,6 +49,14 @@ namespace fsgmpm
     MembraneCoupling(const BackgroundGrid<dim> &grid,
                      Membrane<dim>             &membrane,
                      const double               split_length = 0);
+
+    /// MPI: the partition whose cell owners compute the membrane nodes'
+    /// grid velocities (see the class comment).
+    void
+    attach_partition(const DomainPartition<dim> &p)
+    {
+      partition = &p;
+    }
 
     /// Stage 1m (Eqs. 3, 4, 17): mass, momentum and element forces of the
     /// membrane nodes to the nodes of their cells (which become active),
@@ -119,6 +138,15 @@ namespace fsgmpm
     const double               split_length;
 
     std::vector<std::array<double, dim + 1>> weights;
+
+    const DomainPartition<dim> *partition = nullptr;
+
+    /// MPI: the value of @p f(a) for every membrane node a, computed by the
+    /// owner of the node's cell and summed over the processes (zeros
+    /// elsewhere). Serial: f(a) for every node.
+    template <typename Function>
+    std::vector<Tensor<1, dim>>
+    from_cell_owners(const Function &f) const;
 
     /// sum_i N_i(x_a) v_i over the nodes of node a's cell, with the
     /// transfer weights.

@@ -89,12 +89,15 @@ namespace fsgmpm
      * MPI: the partition whose ghost-layer rim nodes are refreshed after
      * every stage whose nodal values the points read back (so that ghost
      * points evolve as their originals), and whose counted nodes make the
-     * grid update's sums local to this process.
+     * grid update's sums local to this process. Call after
+     * attach_membrane(); the membrane's coupling uses it too.
      */
     void
     attach_partition(const DomainPartition<dim> &partition)
     {
       this->partition = &partition;
+      if (membrane_coupling)
+        membrane_coupling->attach_partition(partition);
     }
 
     /**
