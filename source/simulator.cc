@@ -202,12 +202,6 @@ namespace fsgmpm
                                "process yet (this run has "
                              + n_ranks + "); run it with one process."));
     };
-    refuse(params.stress_integration
-             != Stages::StressIntegration::nodal_projection,
-           "Simulation/Stress integration = nodal projection");
-    refuse(!params.write_grid, "Grid output (Output/Write grid = true)");
-    refuse(params.output_format != "hdf5",
-           "HDF5 output (Output/Format = hdf5)");
     const std::string others = scene_monitors->not_distributed();
     refuse(others.empty(), "The scene monitor(s) " + others);
 
@@ -796,6 +790,7 @@ namespace fsgmpm
       = (params.write_particles || params.write_grid || membrane)
         && output_schedule.active();
     ParticleStore<dim> all_particles;
+    NodalFields<dim>   all_nodes;
     auto               write_output = [&] {
       if (!partition)
         output->write(time, particles, *grid, nodes, membrane.get());
@@ -804,27 +799,44 @@ namespace fsgmpm
           DistributedPoints::gather_on_root(*partition,
                                             particles,
                                             all_particles);
-          // The vorticity needs the nodal velocities around each point,
-          // which only its owner has: computed there, sent by point id.
-          std::vector<std::pair<unsigned int, double>> local(particles.size());
+          // The vorticity and projected pressure need the nodal values
+          // around each point, exact only at its owner: computed there,
+          // sent with the point's id (as a double: exact below 2^53).
+          std::vector<double> local;
+          local.reserve(3 * particles.size());
           for (unsigned int p = 0; p < particles.size(); ++p)
-            local[p] = {particles.id[p],
-                        ParticleOutput<dim>::vorticity(*grid,
-                                                       nodes,
-                                                       particles.cell[p])};
+            {
+              const auto fields = ParticleOutput<dim>::nodal_point_fields(
+                *grid, nodes, particles, p);
+              local.insert(local.end(),
+                           {double(particles.id[p]), fields[0], fields[1]});
+            }
           const auto gathered
             = Utilities::MPI::gather(partition->get_communicator(), local, 0);
+          // The grid's nodal mass and velocity, each node as the process
+          // that counts it has it.
+          if (params.write_grid)
+            {
+              all_nodes.mass = partition->counted_values(nodes.mass);
+              all_nodes.velocity = partition->counted_values(nodes.velocity);
+            }
           if (root)
             {
               std::vector<unsigned int> index(particles.next_id, 0);
               for (unsigned int p = 0; p < all_particles.size(); ++p)
                 index[all_particles.id[p]] = p;
-              std::vector<double> vorticity(all_particles.size(), 0.);
+              std::vector<typename ParticleOutput<dim>::NodalPointFields>
+                fields(all_particles.size());
               for (const auto &from : gathered)
-                for (const auto &[id, omega] : from)
-                  vorticity[index[id]] = omega;
-              output->write(
-                time, all_particles, *grid, nodes, membrane.get(), &vorticity);
+                for (unsigned int k = 0; k + 2 < from.size(); k += 3)
+                  fields[index[static_cast<unsigned int>(from[k])]]
+                    = {{from[k + 1], from[k + 2]}};
+              output->write(time,
+                            all_particles,
+                            *grid,
+                            params.write_grid ? all_nodes : nodes,
+                            membrane.get(),
+                            &fields);
             }
         }
     };

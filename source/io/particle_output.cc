@@ -19,31 +19,46 @@ namespace fsgmpm
   } // namespace
 
   template <int dim>
-  double
-  ParticleOutput<dim>::vorticity(const BackgroundGrid<dim> &grid,
-                                 const NodalFields<dim>    &nodes,
-                                 const unsigned int         c)
+  typename ParticleOutput<dim>::NodalPointFields
+  ParticleOutput<dim>::nodal_point_fields(const BackgroundGrid<dim> &grid,
+                                          const NodalFields<dim>    &nodes,
+                                          const ParticleStore<dim>  &particles,
+                                          const unsigned int         p)
   {
     // Linear simplex: grad v = sum_i v_i (x) grad N_i is constant in the
     // cell; omega_z = dv_y/dx - dv_x/dy.
-    double omega = 0;
+    const unsigned int c     = particles.cell[p];
+    double             omega = 0;
     for (unsigned int k = 0; k < dim + 1; ++k)
       {
         const auto &v = nodes.velocity[grid.cell_nodes[c][k]];
         const auto &g = grid.shape_gradients[c][k];
         omega += v[1] * g[0] - v[0] * g[1];
       }
-    return omega;
+    const auto &s              = particles.stress[p];
+    double      in_plane_trace = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      in_plane_trace += s[d][d];
+    double         projected = -in_plane_trace / dim;
+    Tensor<2, dim> s_projected;
+    if (Stages::projected_stress(grid,
+                                 nodes,
+                                 c,
+                                 grid.barycentric(c, particles.position[p]),
+                                 s_projected))
+      projected = -trace(s_projected) / dim;
+    return {{omega, projected}};
   }
 
 
 
   template <int dim>
   void
-  ParticleOutput<dim>::build_patches(const ParticleStore<dim>  &particles,
-                                     const BackgroundGrid<dim> *grid,
-                                     const NodalFields<dim>    *nodes,
-                                     const std::vector<double> *vorticity)
+  ParticleOutput<dim>::build_patches(
+    const ParticleStore<dim>            &particles,
+    const BackgroundGrid<dim>           *grid,
+    const NodalFields<dim>              *nodes,
+    const std::vector<NodalPointFields> *nodal_fields)
   {
     const unsigned int n_fields = dim + n_stress_components(dim) + 8;
     patches.resize(particles.size());
@@ -66,41 +81,22 @@ namespace fsgmpm
             patch.data(f++, 0) = s[0][2];
             patch.data(f++, 0) = s[1][2];
           }
-        patch.data(f++, 0) = -trace(s) / 3.;
-        patch.data(f++, 0) = particles.mass[p];
-        patch.data(f++, 0) = particles.volume[p];
-        patch.data(f++, 0) = particles.material_id[p];
-        patch.data(f++, 0) = particles.body_id[p];
-        patch.data(f++, 0) = particles.free_surface[p];
-        double omega       = 0;
-        if (vorticity != nullptr)
-          omega = (*vorticity)[p];
-        else if (grid != nullptr && nodes != nullptr)
-          omega
-            = ParticleOutput<dim>::vorticity(*grid, *nodes, particles.cell[p]);
-        patch.data(f++, 0) = omega;
-        // The pressure of the projected stress field, as the mean of its dim
-        // normal components (in 2D the in-plane mean, as the grid sees no
-        // sigma_zz; for a fluid it is the pressure): with the nodal stress
-        // projection, s_j = volume_stress_j / support_volume_j interpolated
-        // to the point, what the grid integrates in cells filled to 3/4 or
-        // more (CellLoops::projection_share; the points' own pressures carry
-        // a sub-cell pattern the projection does not see); with the points'
-        // own stresses (Eq. 3), the point's.
+        patch.data(f++, 0)    = -trace(s) / 3.;
+        patch.data(f++, 0)    = particles.mass[p];
+        patch.data(f++, 0)    = particles.volume[p];
+        patch.data(f++, 0)    = particles.material_id[p];
+        patch.data(f++, 0)    = particles.body_id[p];
+        patch.data(f++, 0)    = particles.free_surface[p];
         double in_plane_trace = 0;
         for (unsigned int d = 0; d < dim; ++d)
           in_plane_trace += s[d][d];
-        double         projected = -in_plane_trace / dim;
-        Tensor<2, dim> s_projected;
-        if (grid != nullptr && nodes != nullptr
-            && Stages::projected_stress(
-              *grid,
-              *nodes,
-              particles.cell[p],
-              grid->barycentric(particles.cell[p], particles.position[p]),
-              s_projected))
-          projected = -trace(s_projected) / dim;
-        patch.data(f++, 0) = projected;
+        NodalPointFields fields = {{0., -in_plane_trace / dim}};
+        if (nodal_fields != nullptr)
+          fields = (*nodal_fields)[p];
+        else if (grid != nullptr && nodes != nullptr)
+          fields = nodal_point_fields(*grid, *nodes, particles, p);
+        patch.data(f++, 0) = fields[0];
+        patch.data(f++, 0) = fields[1];
       }
   }
 

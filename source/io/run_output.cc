@@ -35,17 +35,17 @@ namespace fsgmpm
 
   template <int dim>
   void
-  RunOutput<dim>::write(const double               time,
-                        const ParticleStore<dim>  &particles,
-                        const BackgroundGrid<dim> &grid,
-                        const NodalFields<dim>    &nodes,
-                        const Membrane<dim>       *membrane,
-                        const std::vector<double> *vorticity)
+  RunOutput<dim>::write(const double                         time,
+                        const ParticleStore<dim>            &particles,
+                        const BackgroundGrid<dim>           &grid,
+                        const NodalFields<dim>              &nodes,
+                        const Membrane<dim>                 *membrane,
+                        const std::vector<NodalPointFields> *nodal_fields)
   {
     const std::string &dir = settings.directory;
     if (settings.write_particles)
       {
-        particle_output.build_patches(particles, &grid, &nodes, vorticity);
+        particle_output.build_patches(particles, &grid, &nodes, nodal_fields);
         if (settings.hdf5)
           particle_output.write_xdmf(particle_xdmf, time);
         else

@@ -116,7 +116,17 @@ namespace fsgmpm
   {
     {
       TimerOutput::Scope scope(timer, "p2g");
-      Stages::p2g(grid, particles, nodes, settings.stress_integration);
+      Stages::p2g(grid, particles, nodes, settings.stress_integration, [&]() {
+        if (partition != nullptr)
+          {
+            partition->update_ghost_nodes(nodes.volume_stress,
+                                          nodes.active_stamp,
+                                          nodes.stamp);
+            partition->update_ghost_nodes(nodes.support_volume,
+                                          nodes.active_stamp,
+                                          nodes.stamp);
+          }
+      });
     }
     if (membrane_coupling)
       {
@@ -257,7 +267,13 @@ namespace fsgmpm
       Stages::velocity_gradients(grid, nodes, smoothing, particles);
       if (settings.stress_integration
           == Stages::StressIntegration::nodal_projection)
-        Stages::nodal_velocity_gradients(grid, nodes, smoothing, particles);
+        {
+          Stages::nodal_velocity_gradients(grid, nodes, smoothing, particles);
+          if (partition != nullptr)
+            partition->update_ghost_nodes(smoothing.nodal_velocity_gradient,
+                                          nodes.active_stamp,
+                                          nodes.stamp);
+        }
       Stages::nmd(grid, nodes, material_options, smoothing, particles);
       synchronise_smoothing([](const MaterialOptions &o) { return o.nmd; });
     }

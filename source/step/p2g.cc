@@ -7,10 +7,11 @@ namespace fsgmpm
   {
     template <int dim>
     void
-    p2g(const BackgroundGrid<dim> &grid,
-        const ParticleStore<dim>  &particles,
-        NodalFields<dim>          &nodes,
-        const StressIntegration    integration)
+    p2g(const BackgroundGrid<dim>   &grid,
+        const ParticleStore<dim>    &particles,
+        NodalFields<dim>            &nodes,
+        const StressIntegration      integration,
+        const std::function<void()> &synchronise)
     {
       const bool project = (integration == StressIntegration::nodal_projection);
       nodes.reset_active();
@@ -82,6 +83,8 @@ namespace fsgmpm
 
       if (!project)
         return;
+      if (synchronise)
+        synchronise();
       // Second pass: theta_c times the cell integral of the projected
       // volume-stress density sum_j N_j s_j (s_j = volume_stress_j /
       // support_volume_j), int_c N_j dV = V_c / (dim + 1), times the
@@ -104,11 +107,13 @@ namespace fsgmpm
     p2g<2>(const BackgroundGrid<2> &,
            const ParticleStore<2> &,
            NodalFields<2> &,
-           StressIntegration);
+           StressIntegration,
+           const std::function<void()> &);
     template void
     p2g<3>(const BackgroundGrid<3> &,
            const ParticleStore<3> &,
            NodalFields<3> &,
-           StressIntegration);
+           StressIntegration,
+           const std::function<void()> &);
   } // namespace Stages
 } // namespace fsgmpm

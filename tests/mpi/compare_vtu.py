@@ -1,9 +1,10 @@
 #!/usr/bin/python3
-"""Compare the point fields of two particle VTU files written by fsgmpm.
+"""Compare the fields of two VTU (or HDF5) files written by fsgmpm.
 
 Usage: compare_vtu.py <reference.vtu> <result.vtu> [--skip NAME]... [--quiet]
 
-Reads every array with doc/scripts/read_vtu.py and requires the values to
+Reads every array with doc/scripts/read_vtu.py (every dataset with h5py
+for a .h5 file) and requires the values to
 be identical (bit for bit, as written), except the arrays named with
 --skip. Exits 1 and names the arrays that differ or are missing; with
 --quiet prints nothing if all agree.
@@ -18,12 +19,23 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from read_vtu import read_vtu  # noqa: E402
 
 
+def read(path):
+    if not path.endswith(".h5"):
+        return read_vtu(path)
+    import h5py
+    arrays = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda name, item: arrays.__setitem__(name, item[()])
+                     if isinstance(item, h5py.Dataset) else None)
+    return arrays
+
+
 def main(argv):
     skip = [argv[i + 1] for i in range(len(argv) - 1) if argv[i] == "--skip"]
     quiet = "--quiet" in argv
     files = [a for i, a in enumerate(argv[1:], 1)
              if a not in ("--skip", "--quiet") and argv[i - 1] != "--skip"]
-    reference, result = read_vtu(files[0]), read_vtu(files[1])
+    reference, result = read(files[0]), read(files[1])
     compared = [k for k in reference if k not in skip]
     bad = [k for k in compared
            if k not in result

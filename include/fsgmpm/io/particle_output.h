@@ -8,6 +8,7 @@
 #include <fsgmpm/io/xdmf_series.h>
 #include <fsgmpm/particles/particle_store.h>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,24 +24,36 @@ namespace fsgmpm
   class ParticleOutput : public DataOutInterface<0, dim>
   {
   public:
-    /// Build the patches from the current state of @p particles; with
-    /// @p grid and @p nodes also the vorticity (z component of curl v) of
-    /// the nodal velocities of each point's cell (paper Fig. 12), zero
-    /// without.
-    void
-    /// With @p vorticity (one value per point, e.g. computed where the
-    /// nodal velocities are), that is written instead.
-    build_patches(const ParticleStore<dim>  &particles,
-                  const BackgroundGrid<dim> *grid      = nullptr,
-                  const NodalFields<dim>    *nodes     = nullptr,
-                  const std::vector<double> *vorticity = nullptr);
+    /// The fields of a point that come from the nodal values around it:
+    /// the vorticity and the pressure of the projected stress.
+    using NodalPointFields = std::array<double, 2>;
 
-    /// The vorticity omega_z = dv_y/dx - dv_x/dy of the nodal velocity
-    /// field in cell @p c (constant on a linear simplex).
-    static double
-    vorticity(const BackgroundGrid<dim> &grid,
-              const NodalFields<dim>    &nodes,
-              const unsigned int         c);
+    /// Build the patches from the current state of @p particles; with
+    /// @p grid and @p nodes also nodal_point_fields() of each point, zero
+    /// vorticity and the point's own pressure without. With
+    /// @p nodal_fields (one per point, computed where the nodal values are
+    /// exact: MPI), those are written instead.
+    void
+    build_patches(const ParticleStore<dim>            &particles,
+                  const BackgroundGrid<dim>           *grid         = nullptr,
+                  const NodalFields<dim>              *nodes        = nullptr,
+                  const std::vector<NodalPointFields> *nodal_fields = nullptr);
+
+    /// Point @p p's vorticity omega_z = dv_y/dx - dv_x/dy of the nodal
+    /// velocity field in its cell (constant on a linear simplex; paper
+    /// Fig. 12), and the pressure of the projected stress there: the mean
+    /// of its dim normal components (in 2D the in-plane mean, as the grid
+    /// sees no sigma_zz; for a fluid it is the pressure). With the nodal
+    /// stress projection, s_j = volume_stress_j / support_volume_j
+    /// interpolated to the point, what the grid integrates in cells filled
+    /// to 3/4 or more (CellLoops::projection_share; the points' own
+    /// pressures carry a sub-cell pattern the projection does not see);
+    /// with the points' own stresses (Eq. 3), the point's.
+    static NodalPointFields
+    nodal_point_fields(const BackgroundGrid<dim> &grid,
+                       const NodalFields<dim>    &nodes,
+                       const ParticleStore<dim>  &particles,
+                       const unsigned int         p);
 
     /// The patches as a step of an HDF5 + XDMF series (Output/Format =
     /// hdf5): the same fields as the VTU files, velocity as a 3-vector.

@@ -27,6 +27,8 @@ namespace fsgmpm
   class RunOutput
   {
   public:
+    using NodalPointFields = typename ParticleOutput<dim>::NodalPointFields;
+
     struct Settings
     {
       std::string directory;
@@ -56,15 +58,16 @@ namespace fsgmpm
     remove_previous_output() const;
 
     /// Write the state at @p time (@p membrane may be null). With
-    /// @p vorticity (MPI: gathered from the processes that own the points)
-    /// the points' vorticity is taken from it, not from @p nodes.
+    /// @p nodal_fields (MPI: gathered from the processes that own the
+    /// points) the points' vorticity and projected pressure are taken from
+    /// it, not from @p nodes.
     void
-    write(const double               time,
-          const ParticleStore<dim>  &particles,
-          const BackgroundGrid<dim> &grid,
-          const NodalFields<dim>    &nodes,
-          const Membrane<dim>       *membrane,
-          const std::vector<double> *vorticity = nullptr);
+    write(const double                         time,
+          const ParticleStore<dim>            &particles,
+          const BackgroundGrid<dim>           &grid,
+          const NodalFields<dim>              &nodes,
+          const Membrane<dim>                 *membrane,
+          const std::vector<NodalPointFields> *nodal_fields = nullptr);
 
     State
     state() const;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 namespace fsgmpm
@@ -34,8 +35,8 @@ namespace fsgmpm
    *
    * This first version keeps the whole background grid on every process
    * (memory O(mesh) per process; the points, which dominate, are
-   * distributed). Multi-field contact and membranes are not distributed
-   * yet.
+   * distributed). Multi-field contact is not distributed yet; a membrane
+   * is held whole by every process (MembraneCoupling).
    */
   template <int dim>
   class DomainPartition
@@ -119,6 +120,16 @@ namespace fsgmpm
                        const std::vector<unsigned int> &active_stamp,
                        const unsigned int               stamp) const;
 
+    /**
+     * Every node's value as the process that counts it has it (exact
+     * there), on every process: a sum over the processes in which the
+     * others give -0, the exact neutral element of IEEE addition. For
+     * output of nodal fields; @p T is double or a Tensor of doubles.
+     */
+    template <typename T>
+    std::vector<T>
+    counted_values(const std::vector<T> &values) const;
+
     /// Number of (send + receive) rim nodes: the halo exchanged per field.
     unsigned int
     n_halo_nodes() const;
@@ -149,6 +160,29 @@ namespace fsgmpm
     void
     exchange_bytes() const;
   };
+
+
+
+  template <int dim>
+  template <typename T>
+  std::vector<T>
+  DomainPartition<dim>::counted_values(const std::vector<T> &values) const
+  {
+    static_assert(sizeof(T) % sizeof(double) == 0,
+                  "counted_values() takes doubles or tensors of doubles");
+    constexpr unsigned int n = sizeof(T) / sizeof(double);
+    std::vector<double>    local(n * values.size(), -0.), global(local.size());
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (counted[i])
+        std::memcpy(&local[n * i], &values[i], sizeof(T));
+    Utilities::MPI::sum(make_array_view(std::as_const(local)),
+                        comm,
+                        make_array_view(global));
+    std::vector<T> result(values.size());
+    for (unsigned int i = 0; i < values.size(); ++i)
+      std::memcpy(&result[i], &global[n * i], sizeof(T));
+    return result;
+  }
 
 
 

@@ -45,12 +45,15 @@ namespace fsgmpm
     /// Stage 1 (Eqs. 3, 4, 17): lumped mass, momentum, internal force; the
     /// nodes of occupied cells become the active nodes. With APIC the
     /// momentum carries the affine part: m_p (v_p + C_p (x_i - x_p)).
+    /// With the nodal projection, @p synchronise (MPI: the rim nodes'
+    /// projected stress) runs between the projection and its integration.
     template <int dim>
     void
-    p2g(const BackgroundGrid<dim> &grid,
-        const ParticleStore<dim>  &particles,
-        NodalFields<dim>          &nodes,
-        const StressIntegration    integration = StressIntegration::points);
+    p2g(const BackgroundGrid<dim>   &grid,
+        const ParticleStore<dim>    &particles,
+        NodalFields<dim>            &nodes,
+        const StressIntegration      integration = StressIntegration::points,
+        const std::function<void()> &synchronise = {});
 
     /// The stress field that p2g's nodal projection integrates, at the
     /// point of barycentric coordinates @p lambda in cell @p c:
