@@ -5,6 +5,10 @@
  */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/io/monitor_file.h>
@@ -20,6 +24,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace fsgmpm
@@ -49,22 +55,6 @@ namespace fsgmpm
         if (!may_change_on_restart(path))
           text += path + " = " + value + "\n";
       return text;
-    }
-
-    /// The lines of a listing in alphabetical order: the comparison does
-    /// not depend on the order in which the parameters were declared.
-    std::string
-    sorted_lines(const std::string &text)
-    {
-      std::istringstream       in(text);
-      std::vector<std::string> lines;
-      for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-      std::sort(lines.begin(), lines.end());
-      std::string sorted;
-      for (const auto &line : lines)
-        sorted += line + "\n";
-      return sorted;
     }
 
     /// The checkpoints in @p directory, newest first (the names carry the
@@ -203,35 +193,54 @@ namespace fsgmpm
   void
   Simulator<dim>::check_checkpoint_parameters(const CheckpointReader &in) const
   {
-    const std::string file = sorted_lines(in.text("fsgmpm/parameters"));
     AssertThrow(in.scalar("fsgmpm/dim") == dim,
                 ExcMessage("The checkpoint is of a "
                            + std::to_string(int(in.scalar("fsgmpm/dim")))
                            + "D run; this scene is " + std::to_string(dim)
                            + "D."));
-    const std::string here = sorted_lines(listing_text(parameter_listing));
+    // "path = value" by path, without the parameters a restart may change
+    // (also those that a checkpoint of an older version stored).
+    const auto physics = [](const std::string &text) {
+      std::map<std::string, std::string> values;
+      std::istringstream                 lines(text);
+      for (std::string line; std::getline(lines, line);)
+        {
+          const auto        equals = line.find(" = ");
+          const std::string path   = line.substr(0, equals);
+          if (!may_change_on_restart(path))
+            values[path] = equals == std::string::npos
+                             ? std::string()
+                             : line.substr(equals + 3);
+        }
+      return values;
+    };
+    const auto file = physics(in.text("fsgmpm/parameters"));
+    const auto here = physics(listing_text(parameter_listing));
     if (file == here)
       return;
     // Name the parameters that differ.
-    std::istringstream a(file), b(here);
-    std::string        la, lb, differences;
-    unsigned int       n = 0;
-    while (true)
+    std::set<std::string> paths;
+    for (const auto &m : {file, here})
+      for (const auto &entry : m)
+        paths.insert(entry.first);
+    std::string  differences;
+    unsigned int n = 0;
+    for (const auto &path : paths)
       {
-        const bool more_a = bool(std::getline(a, la));
-        const bool more_b = bool(std::getline(b, lb));
-        if (!more_a && !more_b)
-          break;
-        if (la != lb && ++n <= 5)
-          differences += "\n  checkpoint: " + la + "\n  this run:   " + lb;
-        la.clear();
-        lb.clear();
+        const auto a = file.find(path), b = here.find(path);
+        if (a != file.end() && b != here.end() && a->second == b->second)
+          continue;
+        if (++n <= 5)
+          differences += "\n  " + path + ": checkpoint "
+                         + (a == file.end() ? "(none)" : "<" + a->second + ">")
+                         + ", this run "
+                         + (b == here.end() ? "(none)" : "<" + b->second + ">");
       }
     AssertThrow(false,
                 ExcMessage(
                   "The scene's parameters differ from those of the "
                   "checkpointed run ("
-                  + std::to_string(n) + " line(s)):" + differences
+                  + std::to_string(n) + " parameter(s)):" + differences
                   + "\nA restart may change only Output/*, Simulation/End "
                     "time, Maximum number of steps, Termination, Number "
                     "of threads and Repartition imbalance; run the "
@@ -321,8 +330,18 @@ namespace fsgmpm
   void
   Simulator<dim>::restart(const std::string &directory)
   {
-    const fs::path dir   = fs::path(directory) / "checkpoints";
-    const auto     files = checkpoint_files(dir);
+    const fs::path dir = fs::path(directory) / "checkpoints";
+    // MPI: process 0 reads the checkpoint (CheckpointReader) and its list
+    // of them counts, also where the others do not see its disk.
+    std::vector<fs::path> files;
+    {
+      std::vector<std::string> names;
+      for (const auto &file : checkpoint_files(dir))
+        names.push_back(file.string());
+      if (partition)
+        names = Utilities::MPI::broadcast(partition->get_communicator(), names);
+      files.assign(names.begin(), names.end());
+    }
     AssertThrow(!files.empty(),
                 ExcMessage("--restart " + directory + ": no checkpoint in <"
                            + dir.string()

@@ -35,7 +35,7 @@ namespace fsgmpm
    * exactly gets the membrane's full share. What reads grid values (the
    * nodes' velocities and displacements) is computed by the owner of the
    * node's cell, the only process whose values there are exact, and summed
-   * over the processes (the others contribute zeros, so the sum is the
+   * over the processes (the others contribute -0, so the sum is the
    * owner's value bit for bit); the nodal time-step bound is the minimum
    * over the nodes each process counts. Everything else (slip, splits,
    * location, element forces) runs on identical data on every process.
@@ -142,7 +142,7 @@ namespace fsgmpm
     const DomainPartition<dim> *partition = nullptr;
 
     /// MPI: the value of @p f(a) for every membrane node a, computed by the
-    /// owner of the node's cell and summed over the processes (zeros
+    /// owner of the node's cell and summed over the processes (-0
     /// elsewhere). Serial: f(a) for every node.
     template <typename Function>
     std::vector<Tensor<1, dim>>
