@@ -220,10 +220,11 @@ namespace fsgmpm
   std::pair<unsigned int, unsigned int>
   Simulator<dim>::count_free_surface() const
   {
+    // Between steps: no ghost copies are held.
+    Assert(particles.ghost.empty(), ExcInternalError());
     std::pair<unsigned int, unsigned int> n = {0, 0};
     for (unsigned int p = 0; p < particles.size(); ++p)
-      if (material_options[particles.material_id[p]].detect_free_surface
-          && (particles.ghost.empty() || !particles.ghost[p]))
+      if (material_options[particles.material_id[p]].detect_free_surface)
         {
           n.first += particles.free_surface[p];
           ++n.second;
@@ -522,20 +523,9 @@ namespace fsgmpm
                                     materials,
                                     root ? membrane.get() : nullptr,
                                     params.gravity,
-                                    monitors);
-    if (partition)
-      {
-        // Sums over the processes: these energies may differ from a serial
-        // run's in the last bits (another order of the sum), but they do
-        // not feed back into the motion.
-        const MPI_Comm &comm = partition->get_communicator();
-        monitors.kinetic_energy
-          = Utilities::MPI::sum(monitors.kinetic_energy, comm);
-        monitors.strain_energy
-          = Utilities::MPI::sum(monitors.strain_energy, comm);
-        monitors.potential_energy
-          = Utilities::MPI::sum(monitors.potential_energy, comm);
-      }
+                                    monitors,
+                                    partition ? partition->get_communicator()
+                                              : MPI_COMM_SELF);
   }
 
 
@@ -813,8 +803,8 @@ namespace fsgmpm
             }
           const auto gathered
             = Utilities::MPI::gather(partition->get_communicator(), local, 0);
-          // The grid's nodal mass and velocity, each node as the process
-          // that counts it has it.
+          // The grid's nodal mass and velocity (all that grid output
+          // reads), each node as the process that counts it has it.
           if (params.write_grid)
             {
               all_nodes.mass = partition->counted_values(nodes.mass);

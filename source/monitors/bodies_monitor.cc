@@ -1,5 +1,7 @@
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/monitors/bodies_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
+
 
 namespace fsgmpm
 {
@@ -42,19 +44,17 @@ namespace fsgmpm
   {
     const ParticleStore<dim> &particles = context.particles;
     // Masses first, then kinetic energies: the order of column_names().
-    std::vector<double> values(2 * n_bodies, 0.);
+    // Compensated sums: the values do not depend on the order of the
+    // points nor on how they are split over the processes.
+    std::vector<CompensatedSum> sums(2 * n_bodies);
     for (unsigned int p = 0; p < particles.size(); ++p)
       if (particles.body_id[p] < n_bodies)
         {
-          values[particles.body_id[p]] += particles.mass[p];
-          values[n_bodies + particles.body_id[p]]
-            += 0.5 * particles.mass[p] * particles.velocity[p].norm_square();
+          sums[particles.body_id[p]].add(particles.mass[p]);
+          sums[n_bodies + particles.body_id[p]].add(
+            0.5 * particles.mass[p] * particles.velocity[p].norm_square());
         }
-    const std::vector<double> local = values;
-    Utilities::MPI::sum(make_array_view(local),
-                        context.communicator,
-                        make_array_view(values));
-    return values;
+    return sum_over_processes(sums, context.communicator);
   }
 
   template class BodiesMonitor<2>;

@@ -1,3 +1,4 @@
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/monitors/container_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
 #include <fsgmpm/particles/body_shape.h>
@@ -29,33 +30,43 @@ namespace fsgmpm
   std::map<std::string, double>
   container_monitors(const ParticleStore<dim> &particles,
                      const Membrane<dim>      *membrane,
-                     const unsigned int        container)
+                     const unsigned int        container,
+                     const MPI_Comm            communicator)
   {
-    double m = 0, mx = 0, my = 0, mvy = 0, volume = 0;
+    // Compensated sums over this process's points, then over the
+    // processes: the tilt below takes the angle of nearly cancelling
+    // moments, which must not depend on the order of the points.
+    std::vector<CompensatedSum> sums(5); // m, m x, m y, m v_y, volume
     for (unsigned int p = 0; p < particles.size(); ++p)
       if (particles.body_id[p] == container)
         {
-          m += particles.mass[p];
-          mx += particles.mass[p] * particles.position[p][0];
-          my += particles.mass[p] * particles.position[p][1];
-          mvy += particles.mass[p] * particles.velocity[p][1];
-          volume += particles.volume[p];
+          sums[0].add(particles.mass[p]);
+          sums[1].add(particles.mass[p] * particles.position[p][0]);
+          sums[2].add(particles.mass[p] * particles.position[p][1]);
+          sums[3].add(particles.mass[p] * particles.velocity[p][1]);
+          sums[4].add(particles.volume[p]);
         }
-    const double xc = m > 0 ? mx / m : 0., yc = m > 0 ? my / m : 0.;
+    const std::vector<double> first = sum_over_processes(sums, communicator);
+    const double              m = first[0], mvy = first[3];
+    double                    volume = first[4];
+    const double xc = m > 0 ? first[1] / m : 0., yc = m > 0 ? first[2] / m : 0.;
 
     // Principal axis of the second moment: tan 2 theta = 2 Ixy/(Ixx - Iyy)
     // with Ixx = sum m dx^2 (spread along x).
-    double ixx = 0, iyy = 0, ixy = 0;
+    std::vector<CompensatedSum> moments(3); // Ixx, Iyy, Ixy
     for (unsigned int p = 0; p < particles.size(); ++p)
       if (particles.body_id[p] == container)
         {
           const double dx = particles.position[p][0] - xc,
                        dy = particles.position[p][1] - yc;
-          ixx += particles.mass[p] * dx * dx;
-          iyy += particles.mass[p] * dy * dy;
-          ixy += particles.mass[p] * dx * dy;
+          moments[0].add(particles.mass[p] * dx * dx);
+          moments[1].add(particles.mass[p] * dy * dy);
+          moments[2].add(particles.mass[p] * dx * dy);
         }
-    double tilt = 0.5 * std::atan2(2 * ixy, ixx - iyy) * 180. / M_PI;
+    const std::vector<double> second
+      = sum_over_processes(moments, communicator);
+    const double tilt
+      = 0.5 * std::atan2(2 * second[2], second[0] - second[1]) * 180. / M_PI;
 
     // Distance of a point from the membrane polygon (how far an offending
     // point has crossed it: within a cell is the resolution of grid-node
@@ -101,6 +112,10 @@ namespace fsgmpm
               }
           }
       }
+    double counts[2] = {soil_outside, water_inside};
+    Utilities::MPI::sum(counts, communicator, counts);
+    soil_outside = counts[0];
+    water_inside = counts[1];
     if (dim == 3)
       {
         // Per unit thickness, comparable with the plane-strain scene.
@@ -116,9 +131,16 @@ namespace fsgmpm
               z0 = std::min(z0, x[dim - 1]);
               z1 = std::max(z1, x[dim - 1]);
             }
+        z0 = Utilities::MPI::min(z0, communicator);
+        z1 = Utilities::MPI::max(z1, communicator);
         if (z1 > z0)
           volume /= z1 - z0;
       }
+    // The largest crossing distances: a maximum over the processes.
+    double depths[2] = {water_inside_depth, soil_outside_distance};
+    Utilities::MPI::max(depths, communicator, depths);
+    water_inside_depth    = depths[0];
+    soil_outside_distance = depths[1];
     return {{"container_centre_x", xc},
             {"container_centre_y", yc},
             {"container_velocity_y", m > 0 ? mvy / m : 0.},
@@ -144,8 +166,10 @@ namespace fsgmpm
   std::vector<double>
   ContainerMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
   {
-    const auto values
-      = container_monitors(context.particles, context.membrane, container);
+    const auto          values = container_monitors(context.particles,
+                                           context.membrane,
+                                           container,
+                                           context.communicator);
     std::vector<double> row;
     for (const auto &name : container_monitor_names())
       row.push_back(values.at(name));
@@ -157,11 +181,13 @@ namespace fsgmpm
   template std::map<std::string, double>
   container_monitors<2>(const ParticleStore<2> &,
                         const Membrane<2> *,
-                        const unsigned int);
+                        const unsigned int,
+                        const MPI_Comm);
   template std::map<std::string, double>
   container_monitors<3>(const ParticleStore<3> &,
                         const Membrane<3> *,
-                        const unsigned int);
+                        const unsigned int,
+                        const MPI_Comm);
   template class ContainerMonitor<2>;
   template class ContainerMonitor<3>;
 

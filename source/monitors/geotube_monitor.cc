@@ -1,3 +1,4 @@
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/monitors/geotube_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
 #include <fsgmpm/particles/body_shape.h>
@@ -65,35 +66,29 @@ namespace fsgmpm
 
     // Least-squares p = p0 + p1 (y - y_mean) over the central strip.
     const double xc = 0.5 * (x0 + x1);
-    double       n = 0, sy = 0, sp = 0, syy = 0, syp = 0, volume = 0;
+    // Compensated sums (n, sy, sp, syy, syp, volume): the fit below
+    // subtracts nearly equal sums, so their own rounding must not depend
+    // on the order of the points or on how they are split over processes.
+    std::vector<CompensatedSum> sums(6);
     for (unsigned int q = 0; q < particles.size(); ++q)
       {
         if (particles.body_id[q] != fill_body)
           continue;
-        volume += particles.volume[q];
+        sums[5].add(particles.volume[q]);
         if (std::abs(particles.position[q][0] - xc) > 0.5 * strip_width)
           continue;
         const double y = particles.position[q][1];
         const double p = -trace(particles.stress[q]) / 3.;
-        n += 1;
-        sy += y;
-        sp += p;
-        syy += y * y;
-        syp += y * p;
+        sums[0].add(1.);
+        sums[1].add(y);
+        sums[2].add(p);
+        sums[3].add(y * y);
+        sums[4].add(y * p);
       }
-    {
-      const std::vector<double> local = {n, sy, sp, syy, syp, volume};
-      std::vector<double>       global(local.size());
-      Utilities::MPI::sum(make_array_view(local),
-                          communicator,
-                          make_array_view(global));
-      n      = global[0];
-      sy     = global[1];
-      sp     = global[2];
-      syy    = global[3];
-      syp    = global[4];
-      volume = global[5];
-    }
+    const std::vector<double> global = sum_over_processes(sums, communicator);
+    const double n = global[0], sy = global[1], sp = global[2], syy = global[3],
+                 syp = global[4];
+    double volume    = global[5];
     double p_top = 0, p_bottom = 0;
     if (n >= 2)
       {

@@ -206,7 +206,8 @@ namespace fsgmpm
     {
       if (partition.n_ranks() == 1)
         return;
-      drop_ghosts(particles);
+      // After the step: MpmStep::advance cut the ghost copies off.
+      Assert(particles.ghost.empty(), ExcInternalError());
       std::map<unsigned int, std::vector<char>> send;
       std::vector<std::uint8_t>                 flag(particles.size(), 0);
       bool                                      leaving = false;
@@ -233,11 +234,11 @@ namespace fsgmpm
                    const ParticleStore<dim>   &particles,
                    ParticleStore<dim>         &all)
     {
+      Assert(particles.ghost.empty(), ExcInternalError());
       std::vector<char> buffer;
       buffer.reserve(particles.size() * sizeof(Record<dim>));
       for (unsigned int p = 0; p < particles.size(); ++p)
-        if (particles.ghost.empty() || !particles.ghost[p])
-          pack(particles, p, buffer);
+        pack(particles, p, buffer);
       const auto gathered
         = Utilities::MPI::gather(partition.get_communicator(), buffer, 0);
       all = ParticleStore<dim>();
@@ -255,10 +256,9 @@ namespace fsgmpm
     global_size(const DomainPartition<dim> &partition,
                 const ParticleStore<dim>   &particles)
     {
-      unsigned int n = 0;
-      for (unsigned int p = 0; p < particles.size(); ++p)
-        n += (particles.ghost.empty() || !particles.ghost[p]);
-      return Utilities::MPI::sum(n, partition.get_communicator());
+      Assert(particles.ghost.empty(), ExcInternalError());
+      return Utilities::MPI::sum(particles.size(),
+                                 partition.get_communicator());
     }
 
 
@@ -270,6 +270,7 @@ namespace fsgmpm
                                 ParticleStore<dim> &);            \
   template void         migrate<dim>(const DomainPartition<dim> &,        \
                              ParticleStore<dim> &);               \
+  template void         drop_ghosts<dim>(ParticleStore<dim> &);           \
   template void         gather_on_root<dim>(const DomainPartition<dim> &, \
                                     const ParticleStore<dim> &,   \
                                     ParticleStore<dim> &);        \

@@ -17,12 +17,7 @@ namespace fsgmpm
     , cell_owner(grid.n_cells(), 0)
     , ghost_ranks(grid.n_cells())
     , counted(grid.n_nodes(), 1)
-  {
-    AssertThrow(grid.n_cells() == grid.n_base_cells(),
-                ExcMessage("Multi-field contact (bodies in more than one "
-                           "velocity field) does not run on more than one MPI "
-                           "process yet; run it with one process."));
-  }
+  {}
 
 
 
@@ -38,16 +33,21 @@ namespace fsgmpm
         if (this_process == 0)
           {
             // An empty cell still costs a little (its share of the mesh);
-            // a point costs its transfers.
-            std::vector<unsigned int> weights(n_cells);
+            // a point costs its transfers. The copies of a cell in the
+            // other velocity fields (multi-field contact) share the base
+            // cell's nodes in the contact stage: they go with it.
+            const unsigned int        n_base = grid.n_base_cells();
+            std::vector<unsigned int> weights(n_base, 1);
             for (unsigned int c = 0; c < n_cells; ++c)
-              weights[c] = 1 + 64 * points_per_cell[c];
+              weights[c % n_base] += 64 * points_per_cell[c];
             Triangulation<dim> tria;
             tria.copy_triangulation(grid.get_triangulation());
             GridTools::partition_triangulation(
               n_processes, weights, tria, SparsityTools::Partitioner::metis);
             for (const auto &cell : tria.active_cell_iterators())
-              cell_owner[cell->active_cell_index()] = cell->subdomain_id();
+              for (unsigned int f = 0; f < grid.n_velocity_fields(); ++f)
+                cell_owner[grid.cell_in_field(cell->active_cell_index(), f)]
+                  = cell->subdomain_id();
           }
         const int ierr
           = MPI_Bcast(cell_owner.data(), n_cells, MPI_UNSIGNED, 0, comm);
@@ -63,14 +63,14 @@ namespace fsgmpm
   DomainPartition<dim>::set_owners(const std::vector<unsigned int> &owners)
   {
     const unsigned int n_cells = grid.n_cells();
-    AssertThrow(owners.size() == n_cells
-                  && std::all_of(owners.begin(),
-                                 owners.end(),
-                                 [&](const unsigned int q) {
-                                   return q < n_processes;
-                                 }),
+    bool               fits    = owners.size() == n_cells;
+    for (unsigned int c = 0; fits && c < n_cells; ++c)
+      fits = owners[c] < n_processes
+             && owners[c] == owners[grid.cell_in_field(c, 0)];
+    AssertThrow(fits,
                 ExcMessage("The cell owners do not fit this mesh and this "
-                           "number of processes."));
+                           "number of processes (or split the copies of a "
+                           "cell in the velocity fields)."));
     if (&owners != &cell_owner)
       cell_owner = owners;
 

@@ -1,3 +1,4 @@
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/run/energy_balance.h>
 #include <fsgmpm/step/cell_loops.h>
 
@@ -15,7 +16,8 @@ namespace fsgmpm
                      const std::vector<std::unique_ptr<Material>> &materials,
                      const Membrane<dim>                          *membrane,
                      const Tensor<1, dim>                         &gravity,
-                     Monitors                                     &monitors)
+                     Monitors                                     &monitors,
+                     const MPI_Comm                                communicator)
     {
       const auto                        &cells = particles.occupied_cells;
       std::vector<std::array<double, 3>> partial(cells.size());
@@ -41,23 +43,24 @@ namespace fsgmpm
             }
         },
         16);
-      double ke = 0, se = 0, pe = 0;
+      // Compensated over the cells: the energies do not depend on the
+      // order of the cells or on how they are split over processes.
+      std::vector<CompensatedSum> sums(3); // kinetic, strain, potential
       for (const auto &q : partial)
-        {
-          ke += q[0];
-          se += q[1];
-          pe += q[2];
-        }
+        for (unsigned int k = 0; k < 3; ++k)
+          sums[k].add(q[k]);
       if (membrane)
         {
-          ke += membrane->kinetic_energy();
-          se += membrane->strain_energy();
+          sums[0].add(membrane->kinetic_energy());
+          sums[1].add(membrane->strain_energy());
           for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
-            pe -= membrane->mass[a] * (gravity * membrane->position[a]);
+            sums[2].add(-membrane->mass[a] * (gravity * membrane->position[a]));
         }
-      monitors.kinetic_energy   = ke;
-      monitors.strain_energy    = se;
-      monitors.potential_energy = pe;
+      const std::vector<double> energies
+        = sum_over_processes(sums, communicator);
+      monitors.kinetic_energy   = energies[0];
+      monitors.strain_energy    = energies[1];
+      monitors.potential_energy = energies[2];
     }
 
 
@@ -112,7 +115,8 @@ namespace fsgmpm
     const std::vector<std::unique_ptr<Material>> &,                       \
     const Membrane<dim> *,                                                \
     const Tensor<1, dim> &,                                               \
-    Monitors &);                                                          \
+    Monitors &,                                                           \
+    const MPI_Comm);                                                      \
   template void   add_step<dim>(const Stages::GridUpdateResult &,         \
                               const unsigned int,                       \
                               const NodalFields<dim> &,                 \

@@ -164,29 +164,22 @@ namespace fsgmpm
   std::vector<Tensor<1, dim>>
   MembraneCoupling<dim>::from_cell_owners(const Function &f) const
   {
-    // -0 is the exact neutral element of IEEE addition (x + -0 = x, also
-    // for x = +0), so the sum is the owner's value bit for bit.
-    Tensor<1, dim> neutral;
-    for (unsigned int d = 0; d < dim; ++d)
-      neutral[d] = -0.;
-    std::vector<Tensor<1, dim>> values(membrane.n_nodes(), neutral);
-    for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
-      if (partition == nullptr
-          || partition->owner(membrane.cell[a]) == partition->rank())
-        values[a] = f(a);
-    if (partition != nullptr)
+    std::vector<Tensor<1, dim>> values(membrane.n_nodes());
+    if (partition == nullptr)
       {
-        std::vector<double> local(dim * values.size()), global(local.size());
-        for (unsigned int a = 0; a < values.size(); ++a)
-          for (unsigned int d = 0; d < dim; ++d)
-            local[dim * a + d] = values[a][d];
-        Utilities::MPI::sum(make_array_view(std::as_const(local)),
-                            partition->get_communicator(),
-                            make_array_view(global));
-        for (unsigned int a = 0; a < values.size(); ++a)
-          for (unsigned int d = 0; d < dim; ++d)
-            values[a][d] = global[dim * a + d];
+        for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+          values[a] = f(a);
+        return values;
       }
+    const auto owned = [&](const unsigned int a) {
+      return partition->owner(membrane.cell[a]) == partition->rank();
+    };
+    for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+      if (owned(a))
+        values[a] = f(a);
+    Parallel::take_values_of_owners(values,
+                                    owned,
+                                    partition->get_communicator());
     return values;
   }
 

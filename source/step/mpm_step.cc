@@ -134,6 +134,13 @@ namespace fsgmpm
         membrane_coupling->p2g(nodes);
       }
     TimerOutput::Scope scope(timer, "p2g");
+    // The contact normal at a node takes field 0's mass gradient in every
+    // cell around it, so it reads the nodal masses one ring further out:
+    // exact on the rim only after the refresh.
+    if (partition != nullptr && grid.n_velocity_fields() > 1)
+      partition->update_ghost_nodes(nodes.mass,
+                                    nodes.active_stamp,
+                                    nodes.stamp);
     Stages::contact_normals(grid, particles, nodes);
   }
 
@@ -160,10 +167,6 @@ namespace fsgmpm
         // must be the serial one.
         if (partition != nullptr)
           dt = Utilities::MPI::min(dt, partition->get_communicator());
-      }
-    if (membrane_coupling)
-      {
-        TimerOutput::Scope scope(timer, "membrane");
         // The nodes the membrane touches: the nodal bound with the
         // membrane's and the points' stiffness (which holds the points'
         // share there, so the smaller of the two bounds governs).

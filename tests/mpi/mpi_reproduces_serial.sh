@@ -11,8 +11,8 @@
 # (compare_vtu.py, every field). Also checked: summary.json reports the
 # processes and the same particle count, and as many files are written.
 # Without scenes on the command line: also the nodal stress projection
-# with grid output and the geotube with HDF5 output, repartitioning before
-# every step, and a refusal.
+# with grid output, the geotube with HDF5 output, the geocontainer in 2D
+# and 3D (multi-field contact), and repartitioning before every step.
 #
 # Usage: mpi_reproduces_serial.sh <fsgmpm> <source dir> [scene ...]
 set -u
@@ -29,6 +29,10 @@ fi
 STEPS=${MPI_STEPS:-200}
 RTOL=${MPI_RTOL:-1e-12}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# Processes waiting for a message give up their core: with more processes
+# than cores (or beside another test) Open MPI's busy polling made a
+# 3-process run of 200 steps take 42 s instead of 1.7 s.
+export OMPI_MCA_mpi_yield_when_idle=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -108,6 +112,18 @@ if [ $all_cases = 1 ]; then
     --set "Output/Write grid=true"
   run_case geotube_hdf5 geotube_A6.45 --set "Output/Format=hdf5" \
     --set "Simulation/Maximum number of steps=100"
+  # Multi-field contact: the geocontainer (sand and geotextile in field 0,
+  # water in field 1) at 4 cm. In 2D it starts 0.3 m under water, so that
+  # the water presses on it all round and the process boundaries cross
+  # nodes in contact (as shipped, resting on the surface, they do not):
+  # without the nodal masses refreshed on the rim before the contact
+  # normals, the kinetic energy differs by 19% after 200 steps on 2
+  # processes. In 3D as shipped.
+  run_case geocontainer_submerged geocontainer_polygon \
+    --set "Grid/Cell size=0.04" --set "Membrane/Lowest point=1.0, 0.5" \
+    --set "Membrane/Polygon vertices=1.0, 0.5; 1.13564, 0.58007; 1.09495, 0.62076; 0.90505, 0.62076; 0.86436, 0.58007"
+  run_case geocontainer_3d geocontainer_polygon_3d --set "Grid/Cell size=0.04" \
+    --set "Grid/Extrusion thickness=0.04"
 fi
 
 # Repartitioning (nearly) every step moves the points between processes
@@ -138,18 +154,5 @@ else
     "$work/$(basename "$scene")_1/$last" "$dir/$last" || failed=1
 fi
 
-# What is not distributed yet is refused with a clear error on every
-# process and a non-zero exit, not a hang.
-timeout 120 mpirun --oversubscribe -np 2 "$exe" "$src/prm/geocontainer_polygon.prm" \
-  --set "Output/Directory=$work/refused" > "$work/log" 2>&1
-status=$?
-if [ $status = 0 ] || [ $status = 124 ] \
-  || ! grep -q "does not run on more than one MPI process yet" "$work/log"; then
-  echo "geocontainer on 2 processes: expected a clear refusal, got status $status:"
-  tail -5 "$work/log"
-  failed=1
-else
-  echo "geocontainer on 2 processes: refused (status $status)"
-fi
 if [ $failed = 0 ]; then echo "mpi: all passed"; else echo "mpi: FAILED"; fi
 exit $failed

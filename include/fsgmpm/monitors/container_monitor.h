@@ -25,13 +25,16 @@ namespace fsgmpm
    * - water_points_inside: points of the other bodies inside it;
    * - water_inside_depth, soil_outside_distance: the largest distance from
    *   the membrane of those points (how far they crossed it).
-   * Without a membrane the last two are zero.
+   * Without a membrane the last two are zero. With several processes
+   * each passes its own points and the same membrane; the sums, counts and
+   * extremes are combined over @p communicator.
    */
   template <int dim>
   std::map<std::string, double>
   container_monitors(const ParticleStore<dim> &particles,
                      const Membrane<dim>      *membrane,
-                     const unsigned int        container);
+                     const unsigned int        container,
+                     const MPI_Comm            communicator = MPI_COMM_SELF);
 
   /// Names of the columns container_monitors() provides.
   const std::vector<std::string> &
@@ -62,6 +65,12 @@ namespace fsgmpm
 
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
+
+    bool
+    combines_over_processes() const override
+    {
+      return true;
+    }
 
   private:
     unsigned int container;

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/parallel/values_of_owners.h>
 
 #include <cstdint>
 #include <cstring>
@@ -35,8 +36,9 @@ namespace fsgmpm
    *
    * This first version keeps the whole background grid on every process
    * (memory O(mesh) per process; the points, which dominate, are
-   * distributed). Multi-field contact is not distributed yet; a membrane
-   * is held whole by every process (MembraneCoupling).
+   * distributed). With multi-field contact the copies of a cell in the
+   * other velocity fields belong to the base cell's owner; a membrane is
+   * held whole by every process (MembraneCoupling).
    */
   template <int dim>
   class DomainPartition
@@ -168,19 +170,9 @@ namespace fsgmpm
   std::vector<T>
   DomainPartition<dim>::counted_values(const std::vector<T> &values) const
   {
-    static_assert(sizeof(T) % sizeof(double) == 0,
-                  "counted_values() takes doubles or tensors of doubles");
-    constexpr unsigned int n = sizeof(T) / sizeof(double);
-    std::vector<double>    local(n * values.size(), -0.), global(local.size());
-    for (unsigned int i = 0; i < values.size(); ++i)
-      if (counted[i])
-        std::memcpy(&local[n * i], &values[i], sizeof(T));
-    Utilities::MPI::sum(make_array_view(std::as_const(local)),
-                        comm,
-                        make_array_view(global));
-    std::vector<T> result(values.size());
-    for (unsigned int i = 0; i < values.size(); ++i)
-      std::memcpy(&result[i], &global[n * i], sizeof(T));
+    std::vector<T> result = values;
+    Parallel::take_values_of_owners(
+      result, [this](const unsigned int i) { return counted[i] != 0; }, comm);
     return result;
   }
 

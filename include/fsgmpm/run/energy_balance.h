@@ -26,15 +26,18 @@ namespace fsgmpm
 
     /// Kinetic, strain and potential (-m g.x) energy of the points and the
     /// membrane's nodes into @p monitors. Summed per occupied cell in
-    /// parallel, then in cell order: the result does not depend on the
-    /// number of threads.
+    /// parallel, then over the cells with compensated sums and over the
+    /// processes of @p communicator (each passes its own points, one of
+    /// them the membrane): the result does not depend on the number of
+    /// threads, and on the number of processes only in the last bit or two.
     template <int dim>
     void
     compute_energies(const ParticleStore<dim>                     &particles,
                      const std::vector<std::unique_ptr<Material>> &materials,
                      const Membrane<dim>                          *membrane,
                      const Tensor<1, dim>                         &gravity,
-                     Monitors                                     &monitors);
+                     Monitors                                     &monitors,
+                     const MPI_Comm communicator = MPI_COMM_SELF);
 
     /// Books a step's external and damping work and its lost points, and
     /// the dynamic-relaxation ratios of Eq. (30) from the nodal (remapped)
