@@ -9,11 +9,7 @@ set -eu
 exe=$1
 src=$2
 steps=${3:-200}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# Processes waiting for a message give up their core: with more processes
-# than cores (or beside another test) Open MPI's busy polling made a
-# 3-process run of 200 steps take 42 s instead of 1.7 s.
-export OMPI_MCA_mpi_yield_when_idle=1
+source "$src/tests/mpi/mpi_launch.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cores=$(nproc)
@@ -41,7 +37,7 @@ run() { # name np prm --set arguments...: run on np processes, then report
     --set "Output/Directory=$work/$name" --set "Output/Write particles=false"
     --set "Output/Quiet=true" "$@")
   if [ "$np" = 1 ]; then "$exe" "${args[@]}" > "$work/log" 2>&1
-  else mpirun --oversubscribe -np "$np" "$exe" "${args[@]}" > "$work/log" 2>&1; fi \
+  else mpi_launch "$np" "$exe" "${args[@]}" > "$work/log" 2>&1; fi \
     || { echo "run $name failed:"; tail -5 "$work/log"; exit 1; }
   report "$name" "$np"
 }

@@ -28,11 +28,7 @@ if [ ${#scenes[@]} = 0 ]; then
 fi
 STEPS=${MPI_STEPS:-200}
 RTOL=${MPI_RTOL:-1e-12}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# Processes waiting for a message give up their core: with more processes
-# than cores (or beside another test) Open MPI's busy polling made a
-# 3-process run of 200 steps take 42 s instead of 1.7 s.
-export OMPI_MCA_mpi_yield_when_idle=1
+source "$src/tests/mpi/mpi_launch.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -54,7 +50,7 @@ run_case() {
     if [ $np = 1 ]; then
       "$exe" "${args[@]}" > "$work/log" 2>&1
     else
-      mpirun --oversubscribe -np $np "$exe" "${args[@]}" > "$work/log" 2>&1
+      mpi_launch $np "$exe" "${args[@]}" > "$work/log" 2>&1
     fi
     status=$?
     wall=$((($(date +%s%N) - start) / 1000000))
@@ -130,7 +126,7 @@ fi
 # all the time; the results must not change.
 scene=${scenes[0]}
 dir="$work/repartitioned"
-mpirun --oversubscribe -np 3 "$exe" "$src/prm/$scene.prm" \
+mpi_launch 3 "$exe" "$src/prm/$scene.prm" \
   --set "Simulation/Maximum number of steps=$STEPS" \
   --set "Simulation/Number of threads=1" \
   --set "Simulation/Repartition imbalance=1" \
