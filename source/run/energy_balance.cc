@@ -77,13 +77,15 @@ namespace fsgmpm
       monitors.external_work += grid_result.external_work_increment;
       monitors.dissipated_energy += grid_result.damping_work_increment;
 
-      // Eq. (30) from the nodal (remapped) velocities.
-      double nodal_ke = 0;
+      // Eq. (30) from the nodal (remapped) velocities, compensated.
+      std::vector<CompensatedSum> kinetic(1);
       for (const unsigned int i : nodes.active_nodes)
         if (partition == nullptr || partition->counted_nodes()[i])
-          nodal_ke += 0.5 * nodes.mass[i] * nodes.velocity[i].norm_square();
-      if (partition != nullptr)
-        nodal_ke = Utilities::MPI::sum(nodal_ke, partition->get_communicator());
+          kinetic[0].add(0.5 * nodes.mass[i] * nodes.velocity[i].norm_square());
+      const double nodal_ke
+        = (partition == nullptr)
+            ? kinetic[0].value()
+            : sum_over_processes(kinetic, partition->get_communicator())[0];
       monitors.grid_kinetic_energy = nodal_ke;
       monitors.dr_energy_ratio     = (monitors.external_work > 0)
                                        ? nodal_ke / monitors.external_work

@@ -1,3 +1,4 @@
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/step/stages.h>
 
 #include <cmath>
@@ -23,25 +24,32 @@ namespace fsgmpm
       // there is no energy of the points (a grid node of 4e-7 kg under 68 N
       // in the 3D geotube slab booked -426 J in one step, which tripped the
       // energy guard; the points' kinetic energy was 34 J).
+      // Compensated, so that it does not depend on the order of the nodes
+      // or on how they are split over processes (it steers the damping).
       double mean_mass = 0;
       if (alpha > 0)
         {
-          double n_nodes = 0;
+          CompensatedSum total_mass;
+          double         n_nodes = 0;
           for (const unsigned int i : nodes.active_nodes)
             if (counted_nodes == nullptr || (*counted_nodes)[i])
               {
-                mean_mass += nodes.mass[i];
+                total_mass.add(nodes.mass[i]);
                 n_nodes += 1;
               }
+          mean_mass = total_mass.value();
           if (sum_over_processes)
             {
-              mean_mass = sum_over_processes(mean_mass);
-              n_nodes   = sum_over_processes(n_nodes);
+              mean_mass = sum_over_processes(total_mass.sum())
+                          + sum_over_processes(total_mass.correction());
+              n_nodes = sum_over_processes(n_nodes);
             }
           if (n_nodes > 0)
             mean_mass /= n_nodes;
         }
-      const double light = 1e-4 * mean_mass;
+      // The energy increments and the Eq. (30) force norms, compensated.
+      CompensatedSum external_work, damping_work, unbalanced_sq, external_sq;
+      const double   light = 1e-4 * mean_mass;
       // Nodes with (almost) no mass carry no information; the remap of
       // Eq. (20) gives them a velocity consistent with their particles.
       for (const unsigned int i : nodes.active_nodes)
@@ -82,17 +90,21 @@ namespace fsgmpm
           if (counted_nodes != nullptr && (*counted_nodes)[i] == 0)
             continue;
           const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
-          r.external_work_increment += dt * (nodes.external_force[i] * v_mid);
+          external_work.add(dt * (nodes.external_force[i] * v_mid));
           if (m >= light)
-            r.damping_work_increment -= dt * (damping * v_mid);
+            damping_work.add(-dt * (damping * v_mid));
 
           Tensor<1, dim> free_unbalanced = unbalanced;
           Tensor<1, dim> free_external   = nodes.external_force[i];
           constraints.project_out(i, free_unbalanced);
           constraints.project_out(i, free_external);
-          r.unbalanced_norm_sq += free_unbalanced.norm_square();
-          r.external_norm_sq += free_external.norm_square();
+          unbalanced_sq.add(free_unbalanced.norm_square());
+          external_sq.add(free_external.norm_square());
         }
+      r.external_work_increment = external_work.value();
+      r.damping_work_increment  = damping_work.value();
+      r.unbalanced_norm_sq      = unbalanced_sq.value();
+      r.external_norm_sq        = external_sq.value();
       return r;
     }
 

@@ -19,7 +19,7 @@ passed=0
 failed=0
 check() { # check <name> <command...>: the command must succeed
   local name=$1; shift
-  if "$@"; then echo "ok   $name"; passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
+  if "$@"; then echo "ok   $name (at ${SECONDS} s)"; passed=$((passed + 1)); else echo "FAIL $name (at ${SECONDS} s)"; failed=$((failed + 1)); fi
 }
 n_checkpoints() { ls "$1"/checkpoints/checkpoint_*.h5 2>/dev/null | wc -l; }
 last_vtu() { ls "$1"/particles_*.vtu | tail -1; }
@@ -83,9 +83,9 @@ run_scene granular "$src/prm/granular_column_collapse.prm" 0.05 \
   --set "Simulation/Velocity transfer=APIC affine remap"
 # The geotube (membrane with splitting and slip, kinetic damping, ground),
 # with HDF5 + XDMF output.
-coarse_geotube=(--set "Grid/Cell size=0.32" --set "Simulation/End time=2.4"
+coarse_geotube=(--set "Grid/Cell size=0.32" --set "Simulation/End time=0.8"
   --set "Simulation/Termination=end_time")
-run_scene geotube "$src/prm/geotube_A5.56.prm" 0.4 "${coarse_geotube[@]}" \
+run_scene geotube "$src/prm/geotube_A5.56.prm" 0.2 "${coarse_geotube[@]}" \
   --set "Output/Format=hdf5"
 # The 3D geotube (membrane triangles with their reference shapes).
 run_scene geotube_3d "$src/prm/geotube_A5.56_3d.prm" 0.1 \
@@ -105,7 +105,7 @@ launch=(mpi_launch 2 "$exe")
 run_scene dam_break_mpi "$src/prm/default_dam_break.prm" 0.01 \
   --set "Simulation/End time=0.04" --set "Simulation/Number of threads=1" \
   --set "Simulation/Repartition imbalance=1.03"
-run_scene geotube_mpi "$src/prm/geotube_A5.56.prm" 0.4 "${coarse_geotube[@]}" \
+run_scene geotube_mpi "$src/prm/geotube_A5.56.prm" 0.2 "${coarse_geotube[@]}" \
   --set "Simulation/Number of threads=1"
 run_scene geocontainer_mpi "$src/prm/geocontainer_polygon.prm" 0.02 \
   "${coarse_geocontainer[@]}" --set "Simulation/Number of threads=1"

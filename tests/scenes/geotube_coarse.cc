@@ -23,10 +23,12 @@
 // the analytic bottom pressure (measured -0.4% and +1.1% of it). The max/mean
 // tension check (1%) only guards the slip projection, which makes the tension
 // uniform by construction. No point lost and at most 0.5% of the points outside
-// the membrane. The same for the 3D variant (prm/geotube_A5.56_3d.prm, 8-10 s),
-// measured H/W -0.0050 (own) and -0.0067 (nominal), tension +0.8% and 0.0%,
-// p_top -1.3% and p_bottom -1.6% of p_bottom (with the damped time-step bound):
-// H/W within 0.012 and 0.015, tension within 3% and 3%, pressures within 4%.
+// the membrane. The same for the 3D variant (prm/geotube_A5.56_3d.prm,
+// averaged over 4-6 s: it relaxes in about 3 s), measured H/W -0.0039 (own)
+// and -0.0055 (nominal), tension +1.8% and +1.0%, p_top -0.3% and p_bottom
+// -2.5% of p_bottom (over 8-10 s: -0.0050, -0.0067, +0.8%, 0.0%, -1.3%,
+// -1.6%): H/W within 0.012 and 0.015, tension within 3% and 3%, pressures
+// within 4%.
 // Measured values: see the [ measured ] lines and doc/membrane_validation.md.
 // Label validation (geotube_coarse_eq30), not yet met: convergence by
 // Eq. (30) at 1e-3 within 30 s of relaxation.
@@ -219,9 +221,9 @@ TEST(GeotubeCoarse, ShapeAndTensionMatchAnalytic)
 // monitors are per ring and per unit thickness. Tolerances in the file header.
 TEST(GeotubeCoarse, Slab3DMatchesAnalytic)
 {
-  auto prm = coarse_parameters(10.0, "geotube_A5.56_3d.prm");
+  auto prm = coarse_parameters(6.0, "geotube_A5.56_3d.prm");
   check_coarse_geotube<3>(*prm,
-                          8.0,
+                          4.0,
                           "3D slab 16 cm",
                           {0.012, 0.015, 0.03, 0.03, 0.04});
 }
