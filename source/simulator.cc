@@ -1,5 +1,6 @@
 #include <deal.II/base/multithread_info.h>
 
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/io/membrane_output.h>
@@ -639,13 +640,19 @@ namespace fsgmpm
                                   ? result.displacement_ratio
                                   : std::numeric_limits<double>::infinity(),
                                 comm);
+        // Each process's node sums and their rounding corrections, added
+        // over the processes separately (sum_over_processes()).
         Stages::GridUpdateResult &g = result.grid;
-        g.external_work_increment
-          = Utilities::MPI::sum(g.external_work_increment, comm);
-        g.damping_work_increment
-          = Utilities::MPI::sum(g.damping_work_increment, comm);
-        g.unbalanced_norm_sq = Utilities::MPI::sum(g.unbalanced_norm_sq, comm);
-        g.external_norm_sq   = Utilities::MPI::sum(g.external_norm_sq, comm);
+        const std::vector<double> total
+          = sum_over_processes({g.external_work_increment,
+                                g.damping_work_increment,
+                                g.unbalanced_norm_sq,
+                                g.external_norm_sq},
+                               comm);
+        g.external_work_increment = CompensatedSum(total[0]);
+        g.damping_work_increment  = CompensatedSum(total[1]);
+        g.unbalanced_norm_sq      = CompensatedSum(total[2]);
+        g.external_norm_sq        = CompensatedSum(total[3]);
       }
     set_free_surface_fraction(result.free_surface);
     if (result.membrane_nodes_outside > 0)

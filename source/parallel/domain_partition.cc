@@ -4,6 +4,7 @@
 #include <fsgmpm/parallel/domain_partition.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace fsgmpm
 {

@@ -74,25 +74,26 @@ namespace fsgmpm
              const DomainPartition<dim>     *partition)
     {
       monitors.lost_particles += lost_particles;
-      monitors.external_work += grid_result.external_work_increment;
-      monitors.dissipated_energy += grid_result.damping_work_increment;
+      monitors.external_work += grid_result.external_work_increment.value();
+      monitors.dissipated_energy += grid_result.damping_work_increment.value();
 
       // Eq. (30) from the nodal (remapped) velocities, compensated.
-      std::vector<CompensatedSum> kinetic(1);
+      CompensatedSum kinetic;
       for (const unsigned int i : nodes.active_nodes)
         if (partition == nullptr || partition->counted_nodes()[i])
-          kinetic[0].add(0.5 * nodes.mass[i] * nodes.velocity[i].norm_square());
+          kinetic.add(0.5 * nodes.mass[i] * nodes.velocity[i].norm_square());
       const double nodal_ke
         = (partition == nullptr)
-            ? kinetic[0].value()
-            : sum_over_processes(kinetic, partition->get_communicator())[0];
+            ? kinetic.value()
+            : sum_over_processes(kinetic, partition->get_communicator());
       monitors.grid_kinetic_energy = nodal_ke;
       monitors.dr_energy_ratio     = (monitors.external_work > 0)
                                        ? nodal_ke / monitors.external_work
                                        : std::numeric_limits<double>::infinity();
-      monitors.dr_force_ratio      = (grid_result.external_norm_sq > 0)
-                                       ? std::sqrt(grid_result.unbalanced_norm_sq
-                                              / grid_result.external_norm_sq)
+      const double unbalanced_sq   = grid_result.unbalanced_norm_sq.value();
+      const double external_sq     = grid_result.external_norm_sq.value();
+      monitors.dr_force_ratio      = (external_sq > 0)
+                                       ? std::sqrt(unbalanced_sq / external_sq)
                                        : std::numeric_limits<double>::infinity();
     }
 

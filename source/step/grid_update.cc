@@ -37,19 +37,19 @@ namespace fsgmpm
                 total_mass.add(nodes.mass[i]);
                 n_nodes += 1;
               }
-          mean_mass = total_mass.value();
           if (sum_over_processes)
             {
               mean_mass = sum_over_processes(total_mass.sum())
                           + sum_over_processes(total_mass.correction());
               n_nodes = sum_over_processes(n_nodes);
             }
+          else
+            mean_mass = total_mass.value();
           if (n_nodes > 0)
             mean_mass /= n_nodes;
         }
-      // The energy increments and the Eq. (30) force norms, compensated.
-      CompensatedSum external_work, damping_work, unbalanced_sq, external_sq;
-      const double   light = 1e-4 * mean_mass;
+      // The energy increments and the Eq. (30) force norms.
+      const double light = 1e-4 * mean_mass;
       // Nodes with (almost) no mass carry no information; the remap of
       // Eq. (20) gives them a velocity consistent with their particles.
       for (const unsigned int i : nodes.active_nodes)
@@ -90,21 +90,17 @@ namespace fsgmpm
           if (counted_nodes != nullptr && (*counted_nodes)[i] == 0)
             continue;
           const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
-          external_work.add(dt * (nodes.external_force[i] * v_mid));
+          r.external_work_increment.add(dt * (nodes.external_force[i] * v_mid));
           if (m >= light)
-            damping_work.add(-dt * (damping * v_mid));
+            r.damping_work_increment.add(-dt * (damping * v_mid));
 
           Tensor<1, dim> free_unbalanced = unbalanced;
           Tensor<1, dim> free_external   = nodes.external_force[i];
           constraints.project_out(i, free_unbalanced);
           constraints.project_out(i, free_external);
-          unbalanced_sq.add(free_unbalanced.norm_square());
-          external_sq.add(free_external.norm_square());
+          r.unbalanced_norm_sq.add(free_unbalanced.norm_square());
+          r.external_norm_sq.add(free_external.norm_square());
         }
-      r.external_work_increment = external_work.value();
-      r.damping_work_increment  = damping_work.value();
-      r.unbalanced_norm_sq      = unbalanced_sq.value();
-      r.external_norm_sq        = external_sq.value();
       return r;
     }
 

@@ -242,10 +242,10 @@ TEST(EnergyBalance, EnergiesAndRelaxationRatios)
       nodal_ke += 0.5 * 2. * 0.25;
     }
   Stages::GridUpdateResult step;
-  step.external_work_increment = 4.;
-  step.damping_work_increment  = 1.;
-  step.unbalanced_norm_sq      = 1.;
-  step.external_norm_sq        = 100.;
+  step.external_work_increment = CompensatedSum(4.);
+  step.damping_work_increment  = CompensatedSum(1.);
+  step.unbalanced_norm_sq      = CompensatedSum(1.);
+  step.external_norm_sq        = CompensatedSum(100.);
   EnergyBalance::add_step<2>(step, 2, nodes, monitors);
   EXPECT_EQ(monitors.external_work, 4.);
   EXPECT_EQ(monitors.dissipated_energy, 1.);
@@ -304,5 +304,8 @@ TEST(CompensatedSum, IndependentOfOrderAndSplit)
   EXPECT_NEAR(forward.value(), backward.value(), 4e-16 * scale);
   EXPECT_NEAR(forward.value(), split, 4e-16 * scale);
   // A single process through MPI_COMM_SELF: the same value.
-  EXPECT_EQ(sum_over_processes({forward}, MPI_COMM_SELF)[0], forward.value());
+  EXPECT_EQ(sum_over_processes(std::vector<CompensatedSum>{forward},
+                               MPI_COMM_SELF)[0],
+            forward.value());
+  EXPECT_EQ(sum_over_processes(forward, MPI_COMM_SELF), forward.value());
 }

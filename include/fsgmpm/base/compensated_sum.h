@@ -22,6 +22,14 @@ namespace fsgmpm
   class CompensatedSum
   {
   public:
+    CompensatedSum() = default;
+
+    /// A sum that starts at @p value (e.g. one already summed over the
+    /// processes).
+    explicit CompensatedSum(const double value)
+      : s(value)
+    {}
+
     void
     add(const double x)
     {
@@ -78,6 +86,20 @@ namespace fsgmpm
     for (unsigned int k = 0; k < n; ++k)
       values[k] = global[k] + global[n + k];
     return values;
+  }
+
+
+
+  /// As above, for one sum.
+  inline double
+  sum_over_processes(const CompensatedSum &sum, const MPI_Comm &comm)
+  {
+    const double local[2] = {sum.sum(), sum.correction()};
+    double       global[2];
+    dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(local, 2),
+                                comm,
+                                dealii::ArrayView<double>(global, 2));
+    return global[0] + global[1];
   }
 } // namespace fsgmpm
 

@@ -1,6 +1,7 @@
 #ifndef fsgmpm_step_stages_h
 #define fsgmpm_step_stages_h
 
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
@@ -86,10 +87,12 @@ namespace fsgmpm
     /// What grid_update reports for energy bookkeeping and Eq. (30).
     struct GridUpdateResult
     {
-      double external_work_increment = 0; ///< dt * F_ext . v_mid
-      double damping_work_increment  = 0; ///< energy removed by damping
-      double unbalanced_norm_sq      = 0; ///< |F_ext - F_int|^2, free comps
-      double external_norm_sq        = 0; ///< |F_ext|^2, free components
+      // Sums over the nodes, compensated so that a sum over the processes
+      // (sum_over_processes()) equals the serial one to a rounding.
+      CompensatedSum external_work_increment; ///< dt * F_ext . v_mid
+      CompensatedSum damping_work_increment;  ///< energy removed by damping
+      CompensatedSum unbalanced_norm_sq;      ///< |F_ext - F_int|^2, free comps
+      CompensatedSum external_norm_sq;        ///< |F_ext|^2, free components
     };
 
     /// Stage 2 (Eq. 18): a = (F_ext - F_int + F_damp)/m with gravity in
