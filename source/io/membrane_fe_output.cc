@@ -59,9 +59,10 @@ namespace fsgmpm
     std::vector<Point<dim>> x(fe.n_support_points());
     for (unsigned int i = 0; i < x.size(); ++i)
       x[i] = membrane.position[membrane.support_point_node(i)];
-    std::vector<Tensor<1, dim>>        force;
-    std::vector<std::array<double, 2>> stress;
-    fe.internal_forces(x, force, &stress);
+    std::vector<Tensor<1, dim>>          force;
+    std::vector<std::array<double, 2>>   stress;
+    std::vector<SymmetricTensor<2, dim>> tension_tensor;
+    fe.internal_forces(x, force, &stress, &tension_tensor);
     Vector<double>      major(n_cells), minor(n_cells), stretch(n_cells);
     std::vector<double> size(n_cells, 0.), rest_size(n_cells, 0.);
     for (unsigned int e = 0; e < membrane.n_elements(); ++e)
@@ -77,6 +78,26 @@ namespace fsgmpm
         minor[c]           = stress[c][1];
         const double ratio = size[c] / rest_size[c];
         stretch[c]         = dim == 2 ? ratio : std::sqrt(ratio);
+      }
+
+    // The cell-averaged tension tensor as a constant per cell (DG_0, dim x
+    // dim components): DataOut writes cell data of one component only.
+    const FESystem<dim - 1, dim> constant(FE_SimplexDGP<dim - 1, dim>(0),
+                                          dim * dim);
+    DoFHandler<dim - 1, dim>     tensor_dofs(scalar.get_triangulation());
+    tensor_dofs.distribute_dofs(constant);
+    Vector<double>                       tensor(tensor_dofs.n_dofs());
+    std::vector<types::global_dof_index> tensor_cell_dofs(
+      constant.n_dofs_per_cell());
+    for (const auto &cell : tensor_dofs.active_cell_iterators())
+      {
+        cell->get_dof_indices(tensor_cell_dofs);
+        for (unsigned int j = 0; j < tensor_cell_dofs.size(); ++j)
+          {
+            const unsigned int k = constant.system_to_component_index(j).first;
+            tensor[tensor_cell_dofs[j]]
+              = tension_tensor[cell->active_cell_index()][k / dim][k % dim];
+          }
       }
 
     const MappingFEField<dim - 1, dim, Vector<double>> mapping(dof_handler,
@@ -102,6 +123,12 @@ namespace fsgmpm
     data_out.add_data_vector(stretch,
                              "stretch",
                              DataOut<dim - 1, dim>::type_cell_data);
+    data_out.add_data_vector(
+      tensor_dofs,
+      tensor,
+      std::vector<std::string>(dim * dim, "tension_tensor"),
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim * dim, DataComponentInterpretation::component_is_part_of_tensor));
     // Degree 2: one quadratic (Lagrange) VTK cell per FE cell, curved as
     // the element is.
     data_out.build_patches(mapping, degree);

@@ -160,9 +160,10 @@ namespace fsgmpm
   template <int dim>
   void
   MembraneFE<dim>::internal_forces(
-    const std::vector<Point<dim>>      &x,
-    std::vector<Tensor<1, dim>>        &force,
-    std::vector<std::array<double, 2>> *cell_stress) const
+    const std::vector<Point<dim>>        &x,
+    std::vector<Tensor<1, dim>>          &force,
+    std::vector<std::array<double, 2>>   *cell_stress,
+    std::vector<SymmetricTensor<2, dim>> *cell_tension_tensor) const
   {
     AssertThrow(x.size() == n_support_points(),
                 ExcMessage("MembraneFE: one position per support point "
@@ -172,11 +173,14 @@ namespace fsgmpm
     const unsigned int n_cells = triangulation.n_active_cells();
     if (cell_stress)
       cell_stress->assign(n_cells, {{0., 0.}});
+    if (cell_tension_tensor)
+      cell_tension_tensor->assign(n_cells, SymmetricTensor<2, dim>());
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         const types::global_dof_index *dofs = &cell_dofs[c * n_dofs];
         double                         area = 0;
         std::array<double, 2>          stress{{0., 0.}};
+        SymmetricTensor<2, dim>        sigma_sum;
         for (unsigned int q = 0; q < n_q_points; ++q)
           {
             const unsigned int cq = c * n_q_points + q;
@@ -198,6 +202,9 @@ namespace fsgmpm
                 if (stretch > 0)
                   P[0] = (T / stretch) * g[0];
                 principal[0] = T;
+                if (cell_tension_tensor && stretch > 0)
+                  sigma_sum += (JxW[cq] * T / (stretch * stretch))
+                               * symmetrize(outer_product(g[0], g[0]));
               }
             else
               {
@@ -226,6 +233,19 @@ namespace fsgmpm
                         principal = {{0.5 * tr + root, 0.5 * tr - root}};
                       }
                   }
+                if (cell_tension_tensor)
+                  {
+                    // sigma = G S G^T / J, J the area ratio.
+                    const double J = cross_product_3d(g[0], g[1]).norm();
+                    if (J > 0)
+                      sigma_sum
+                        += (JxW[cq] / J)
+                           * (S[0] * symmetrize(outer_product(g[0], g[0]))
+                              + S[1] * symmetrize(outer_product(g[1], g[1]))
+                              + S[2]
+                                  * (2.
+                                     * symmetrize(outer_product(g[0], g[1]))));
+                  }
               }
             const double w = JxW[cq];
             for (unsigned int i = 0; i < n_dofs; ++i)
@@ -237,6 +257,8 @@ namespace fsgmpm
           }
         if (cell_stress)
           (*cell_stress)[c] = {{stress[0] / area, stress[1] / area}};
+        if (cell_tension_tensor)
+          (*cell_tension_tensor)[c] = sigma_sum / area;
       }
   }
 

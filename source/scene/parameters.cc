@@ -238,8 +238,9 @@ namespace fsgmpm
                         "HDF5, with tension and stretch per piece, read by "
                         "doc/scripts) or finite elements (deal.II's DataOut "
                         "of the MembraneFE cells, quadratic cells at degree "
-                        "2, with tension, minor_tension and stretch per cell "
-                        "and velocity and displacement per node; VTU only).");
+                        "2, with tension, minor_tension, the tension "
+                        "tensor (N/m, x-y-z) and stretch per cell and "
+                        "velocity and displacement per node; VTU only).");
       prm.declare_entry("Write grid",
                         "false",
                         Patterns::Bool(),

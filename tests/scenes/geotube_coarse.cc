@@ -356,8 +356,10 @@ namespace
 // Second-order Gmsh triangles at degree 2 run and are written by deal.II's
 // DataOut (Output/Membrane output = finite elements): 80 quadratic
 // triangles (VTK Lagrange triangles, 6 points each) with tension,
-// minor_tension, stretch, velocity and displacement; the largest tension in
-// the file is the membrane's (single precision).
+// minor_tension, tension_tensor, stretch, velocity and displacement; the
+// largest tension in the file is the membrane's (single precision), and the
+// tension tensor's trace is tension + minor_tension (both are averages of
+// the same quadrature points, and the trace is linear).
 TEST(GeotubeCoarse, GmshSecondOrderWrittenByDataOut)
 {
   auto prm = slab_parameters(0.2, "geotube_A5.56_p2.msh", 2);
@@ -395,4 +397,22 @@ TEST(GeotubeCoarse, GmshSecondOrderWrittenByDataOut)
               written);
   EXPECT_GT(largest, 1000.);
   EXPECT_NEAR(written, largest, 1e-6 * largest);
+
+  const auto minor_bytes  = vtu_array(vtu, "minor_tension");
+  const auto tensor_bytes = vtu_array(vtu, "tension_tensor");
+  ASSERT_EQ(minor_bytes.size(), 480 * sizeof(float));
+  ASSERT_EQ(tensor_bytes.size(), 480 * 9 * sizeof(float));
+  std::vector<float> minor(480), tensor(480 * 9);
+  std::memcpy(minor.data(), minor_bytes.data(), minor_bytes.size());
+  std::memcpy(tensor.data(), tensor_bytes.data(), tensor_bytes.size());
+  double worst_trace = 0;
+  for (unsigned int p = 0; p < 480; ++p)
+    worst_trace
+      = std::max(worst_trace,
+                 std::abs(double(tensor[9 * p]) + tensor[9 * p + 4]
+                          + tensor[9 * p + 8] - tension[p] - minor[p]));
+  std::printf("measured |trace(tension_tensor) - tension - minor_tension| "
+              "<= %.2e N/m\n",
+              worst_trace);
+  EXPECT_LT(worst_trace, 1e-6 * largest);
 }

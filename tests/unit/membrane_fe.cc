@@ -145,6 +145,31 @@ TEST(MembraneFE, DegreeOneCablesEqualTheHandWrittenOnes)
             << error / largest(f_hand) << std::endl;
   EXPECT_GT(largest(f_hand), 1e3);
   EXPECT_LT(error, 5e-14 * largest(f_hand));
+
+  // The tension and the tension tensor of each cable: T and T t t^T, with
+  // T = EA max(0, l/L - 1) and t the chord's direction.
+  std::vector<Tensor<1, 2>>          f;
+  std::vector<std::array<double, 2>> stress;
+  std::vector<SymmetricTensor<2, 2>> tensor;
+  fe.internal_forces(x, f, &stress, &tensor);
+  double worst = 0, largest_T = 0;
+  for (const auto &cell : tria.active_cell_iterators())
+    {
+      const unsigned int c = cell->active_cell_index();
+      const Tensor<1, 2> chord
+        = x[support[cell->vertex_index(1)]] - x[support[cell->vertex_index(0)]];
+      const double T = EA * std::max(0., chord.norm() / cell->measure() - 1);
+      const Tensor<1, 2>          t = chord / chord.norm();
+      const SymmetricTensor<2, 2> expected
+        = T * symmetrize(outer_product(t, t));
+      largest_T = std::max(largest_T, T);
+      worst     = std::max(
+        {worst, std::abs(stress[c][0] - T), (tensor[c] - expected).norm()});
+    }
+  std::cout << "[ measured ] 2D cable tension and tension tensor: "
+            << worst / largest_T << std::endl;
+  EXPECT_GT(largest_T, 1e3);
+  EXPECT_LT(worst, 1e-13 * largest_T);
 }
 
 TEST(MembraneFE, DegreeOneTrianglesEqualTheHandWrittenOnes)

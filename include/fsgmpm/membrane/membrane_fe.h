@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -87,11 +88,16 @@ namespace fsgmpm
     /// cell's quadrature points with their weights: the cable tension
     /// EA max(0, lambda - 1) in 2D (minor 0); in 3D the eigenvalues of
     /// sigma = F S F^T / J in the current tangent plane, after the
-    /// cut-off.
+    /// cut-off. If @p cell_tension_tensor is given, it receives per active
+    /// cell the same average of sigma itself (N/m, in x-y-z: T t t^T for a
+    /// cable of direction t), from which any component can be taken, e.g.
+    /// the hoop tension of a tube.
     void
-    internal_forces(const std::vector<Point<dim>>      &x,
-                    std::vector<Tensor<1, dim>>        &force,
-                    std::vector<std::array<double, 2>> *cell_stress) const;
+    internal_forces(const std::vector<Point<dim>>        &x,
+                    std::vector<Tensor<1, dim>>          &force,
+                    std::vector<std::array<double, 2>>   *cell_stress,
+                    std::vector<SymmetricTensor<2, dim>> *cell_tension_tensor
+                    = nullptr) const;
 
     /// Lumped mass of each support point for the areal mass @p mu (kg/m^2,
     /// kg/m for cables): the diagonal of the consistent mass matrix scaled
