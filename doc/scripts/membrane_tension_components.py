@@ -30,7 +30,9 @@ def components(path):
             sys.exit(f"membrane_tension_components.py: no {name} in {path} "
                      "(write it with Output/Membrane output = finite "
                      "elements)")
-    points = fields["Points"]
+    # In double precision: the file holds single precision, and sums of
+    # thousands of cells in it would lose digits.
+    points = fields["Points"].astype(np.float64)
     n_points = len(points)
     # VTK_LAGRANGE_TRIANGLE (69, degree 2): 6 points; VTK_TRIANGLE: 3.
     per_cell = 6 if fields["types"][0] == 69 else 3
@@ -41,8 +43,10 @@ def components(path):
     normal /= np.linalg.norm(normal, axis=1)[:, None]
     hoop = np.cross(np.array([0., 0., 1.]), normal)
     hoop /= np.linalg.norm(hoop, axis=1)[:, None]
-    sigma = fields["tension_tensor"].reshape(n_cells, per_cell, 3, 3)[:, 0]
-    major = fields["tension"].reshape(n_cells, per_cell)[:, 0]
+    sigma = fields["tension_tensor"].astype(np.float64).reshape(
+        n_cells, per_cell, 3, 3)[:, 0]
+    major = fields["tension"].astype(np.float64).reshape(n_cells,
+                                                          per_cell)[:, 0]
     z = np.array([0., 0., 1.])
     tt = np.einsum("ci,cij,cj->c", hoop, sigma, hoop)
     zz = np.einsum("j,cij,i->c", z, sigma, z)
