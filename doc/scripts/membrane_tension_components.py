@@ -34,8 +34,14 @@ def components(path):
     # thousands of cells in it would lose digits.
     points = fields["Points"].astype(np.float64)
     n_points = len(points)
-    # VTK_LAGRANGE_TRIANGLE (69, degree 2): 6 points; VTK_TRIANGLE: 3.
-    per_cell = 6 if fields["types"][0] == 69 else 3
+    # VTK_LAGRANGE_TRIANGLE (69, degree 2): 6 points; VTK_TRIANGLE (5): 3.
+    # Anything else (a 2D membrane's lines) is no tube surface.
+    types = set(int(t) for t in fields["types"])
+    if types not in ({69}, {5}):
+        sys.exit(f"membrane_tension_components.py: {path} holds cells of "
+                 f"VTK types {sorted(types)}, not the triangles of a 3D "
+                 "membrane (5, or 69 at degree 2)")
+    per_cell = 6 if types == {69} else 3
     n_cells = n_points // per_cell
     corner = points.reshape(n_cells, per_cell, 3)[:, :3, :]
     normal = np.cross(corner[:, 1] - corner[:, 0], corner[:, 2] - corner[:, 0])
