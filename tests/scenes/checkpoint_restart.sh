@@ -36,7 +36,8 @@ run_scene() {
   local name=$1 prm=$2 interval=$3
   shift 3
   local args=("$prm" --set "Output/Quiet=true" --set "Simulation/Number of threads=2"
-              --set "Output/Checkpoint interval=$interval" "$@")
+              --set "Output/Checkpoint interval=$interval"
+              --set "Output/Output interval=$interval" "$@")
   "${launch[@]}" "${args[@]}" --set "Output/Directory=$name.full" >/dev/null
   check "$name: uninterrupted run" test -f "$name.full/summary.json"
 
@@ -74,38 +75,42 @@ run_scene() {
   check "$name: monitors.csv identical after it" cmp -s "$name.full/monitors.csv" "$name.truncated/monitors.csv"
 }
 
-# The dam break (NMD + ANP, free surface, one velocity field).
-run_scene dam_break "$src/prm/default_dam_break.prm" 0.01 --set "Simulation/End time=0.04"
+# Each scene runs three checkpoint intervals (killed after the second), on
+# a coarse grid: restarts are byte for byte at any resolution.
+# The dam break (NMD + ANP, free surface, one velocity field), 2 cm cells.
+dam_break=(--set "Grid/Cell size=0.02")
+run_scene dam_break "$src/prm/default_dam_break.prm" 0.01 "${dam_break[@]}" \
+  --set "Simulation/End time=0.03"
 # The granular collapse (Mohr-Coulomb, APIC with its affine remap, which
 # crashed on 2 threads before this test existed).
 run_scene granular "$src/prm/granular_column_collapse.prm" 0.05 \
-  --set "Grid/Cell size=0.02" --set "Simulation/End time=0.4" \
+  --set "Grid/Cell size=0.02" --set "Simulation/End time=0.15" \
   --set "Simulation/Velocity transfer=APIC affine remap"
 # The geotube (membrane with splitting and slip, kinetic damping, ground),
 # with HDF5 + XDMF output.
-coarse_geotube=(--set "Grid/Cell size=0.32" --set "Simulation/End time=0.8"
+coarse_geotube=(--set "Grid/Cell size=0.32" --set "Simulation/End time=0.3"
   --set "Simulation/Termination=end_time")
-run_scene geotube "$src/prm/geotube_A5.56.prm" 0.2 "${coarse_geotube[@]}" \
+run_scene geotube "$src/prm/geotube_A5.56.prm" 0.1 "${coarse_geotube[@]}" \
   --set "Output/Format=hdf5"
 # The 3D geotube (membrane triangles with their reference shapes).
-run_scene geotube_3d "$src/prm/geotube_A5.56_3d.prm" 0.1 \
+run_scene geotube_3d "$src/prm/geotube_A5.56_3d.prm" 0.05 \
   --set "Grid/Cell size=0.32" --set "Grid/Extrusion thickness=0.32" \
-  --set "Simulation/End time=0.3" --set "Simulation/Termination=end_time"
+  --set "Simulation/End time=0.15" --set "Simulation/Termination=end_time"
 # The geocontainer (sand, geotextile no-slip, water in its own field, contact).
-coarse_geocontainer=(--set "Grid/Cell size=0.08" --set "Simulation/End time=0.1")
+coarse_geocontainer=(--set "Grid/Cell size=0.08" --set "Simulation/End time=0.06")
 run_scene geocontainer "$src/prm/geocontainer_polygon.prm" 0.02 \
   "${coarse_geocontainer[@]}"
 
 # With MPI (2 processes, one thread each): the checkpoint holds all points
 # and the partition; the restart on 2 processes continues as the
 # uninterrupted 2-process run, byte for byte. The dam break repartitions
-# while it runs (5 times at a threshold of 1.03); the geotube has its
+# while it runs (36 times at a threshold of 1.03); the geotube has its
 # membrane on every process; the geocontainer adds multi-field contact.
 launch=(mpi_launch 2 "$exe")
-run_scene dam_break_mpi "$src/prm/default_dam_break.prm" 0.01 \
-  --set "Simulation/End time=0.04" --set "Simulation/Number of threads=1" \
+run_scene dam_break_mpi "$src/prm/default_dam_break.prm" 0.01 "${dam_break[@]}" \
+  --set "Simulation/End time=0.03" --set "Simulation/Number of threads=1" \
   --set "Simulation/Repartition imbalance=1.03"
-run_scene geotube_mpi "$src/prm/geotube_A5.56.prm" 0.2 "${coarse_geotube[@]}" \
+run_scene geotube_mpi "$src/prm/geotube_A5.56.prm" 0.1 "${coarse_geotube[@]}" \
   --set "Simulation/Number of threads=1"
 run_scene geocontainer_mpi "$src/prm/geocontainer_polygon.prm" 0.02 \
   "${coarse_geocontainer[@]}" --set "Simulation/Number of threads=1"
@@ -113,22 +118,23 @@ run_scene geocontainer_mpi "$src/prm/geocontainer_polygon.prm" 0.02 \
 # (a new partition): the same run, up to the order of the energy sums.
 "${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
   --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
-  --set "Simulation/Repartition imbalance=1.03" \
-  --set "Simulation/End time=0.05" --restart dam_break_mpi.full >/dev/null
+  --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
+  --set "Simulation/End time=0.04" --restart dam_break_mpi.full >/dev/null
 check "MPI: a 2-process run continues on 2 processes to a later end time" \
   grep -q '"termination": "end_time"' dam_break_mpi.full/summary.json
 cp -r dam_break.full dam_break.serial_to_mpi
 "${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
   --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
-  --set "Simulation/Repartition imbalance=1.03" \
-  --set "Simulation/End time=0.05" --restart dam_break.serial_to_mpi >/dev/null
+  --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
+  --set "Simulation/End time=0.04" --restart dam_break.serial_to_mpi >/dev/null
 check "MPI: a serial run's checkpoint continues on 2 processes" \
   /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
   dam_break_mpi.full/monitors.csv dam_break.serial_to_mpi/monitors.csv --rtol 1e-12
 launch=("$exe")
 
 # Bad restarts.
-scene=("$src/prm/default_dam_break.prm" --set "Output/Quiet=true" --set "Output/Checkpoint interval=0.01")
+scene=("$src/prm/default_dam_break.prm" --set "Output/Quiet=true" --set "Output/Checkpoint interval=0.01"
+  "${dam_break[@]}")
 "$exe" "${scene[@]}" --set "Simulation/Courant number=0.3" --restart dam_break.full >/dev/null 2>other.err
 check "other physics: exit 1" test $? -eq 1
 check "other physics: the parameter is named" grep -q "Courant number" other.err
@@ -141,11 +147,11 @@ for f in damaged/checkpoints/*.h5; do printf 'garbage' | dd of="$f" bs=1 seek=50
 "$exe" "${scene[@]}" --set "Simulation/End time=0.2" --restart damaged >/dev/null 2>damaged.err
 check "every checkpoint damaged: exit 1" test $? -eq 1
 check "every checkpoint damaged: says so" grep -q "no checkpoint reads back intact" damaged.err
-"$exe" "${scene[@]}" --set "Simulation/End time=0.04" --restart dam_break.full >/dev/null 2>end.err
+"$exe" "${scene[@]}" --set "Simulation/End time=0.03" --restart dam_break.full >/dev/null 2>end.err
 check "at the end time already: exit 1" test $? -eq 1
 check "at the end time already: says to raise it" grep -q "raise them to continue" end.err
 # A finished run continues to a later end time from its final checkpoint.
-"$exe" "${scene[@]}" --set "Simulation/End time=0.05" --restart dam_break.full >/dev/null
+"$exe" "${scene[@]}" --set "Simulation/End time=0.04" --restart dam_break.full >/dev/null
 check "a finished run continues to a later end time" grep -q '"termination": "end_time"' dam_break.full/summary.json
 
 # A full disk (a 6 MB tmpfs; skipped where mounting is not permitted): the
