@@ -265,6 +265,34 @@ namespace fsgmpm
 
 
   template <int dim>
+  double
+  MembraneFE<dim>::strain_energy(const std::vector<Point<dim>> &x) const
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("MembraneFE::strain_energy() is that of the 2D "
+                           "cables only."));
+    AssertThrow(x.size() == n_support_points(),
+                ExcMessage("MembraneFE: one position per support point "
+                           "is needed."));
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    double             energy = 0;
+    for (unsigned int c = 0; c < triangulation.n_active_cells(); ++c)
+      for (unsigned int q = 0; q < n_q_points; ++q)
+        {
+          const unsigned int cq = c * n_q_points + q;
+          const double      *dN = &tangent_derivative[cq * n_dofs * (dim - 1)];
+          Tensor<1, dim>     g;
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            g += dN[i * (dim - 1)] * x[cell_dofs[c * n_dofs + i]];
+          const double strain = std::max(0., g.norm() - 1.);
+          energy += 0.5 * EA * strain * strain * JxW[cq];
+        }
+    return energy;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   MembraneFE<dim>::lumped_masses(const double mu) const
   {

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/membrane/membrane_fe.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/membrane/membrane_slip.h>
 
@@ -75,6 +76,27 @@ namespace fsgmpm
           position[node[k]] = moved[k];
         return max_move;
       }
+
+      // Point at fraction t of loop chord e (from loop node e to e + 1) on
+      // the circles through its neighbours, as in equalize_loop().
+      template <int dim>
+      Point<dim>
+      point_on_loop(const std::vector<Point<dim>>   &position,
+                    const std::vector<unsigned int> &node,
+                    const unsigned int               e,
+                    const double                     t)
+      {
+        const unsigned int n  = node.size();
+        const Point<dim>  &p0 = position[node[(e + n - 1) % n]],
+                         &p1  = position[node[e]],
+                         &p2  = position[node[(e + 1) % n]],
+                         &p3  = position[node[(e + 2) % n]];
+        const Point<dim> x
+          = MembraneGeometry::point_on_arc(p0, p1, p2, p1, p2, t);
+        const Point<dim> y
+          = MembraneGeometry::point_on_arc(p1, p2, p3, p1, p2, t);
+        return Point<dim>(0.5 * (x + y));
+      }
     } // namespace
 
 
@@ -133,6 +155,152 @@ namespace fsgmpm
               }
           return max_move;
         }
+    }
+
+
+
+    template <int dim>
+    double
+    relax_tangential_forces(Membrane<dim>     &membrane,
+                            const unsigned int newton_steps,
+                            double            *released)
+    {
+      if (released)
+        *released = 0;
+      if (dim != 2 || !applies(membrane))
+        return 0;
+      const MembraneFE<dim>          &fe     = membrane.get_fe();
+      const std::vector<unsigned int> loop   = membrane.loop_nodes();
+      const unsigned int              n      = loop.size();
+      const unsigned int              degree = fe.get_degree();
+      const double                    EA = membrane.properties.axial_stiffness;
+      // The support points' positions, and the support point of each node.
+      std::vector<unsigned int> dof_of_node(membrane.n_nodes(), 0);
+      std::vector<Point<dim>>   x(fe.n_support_points());
+      auto gather = [&](const std::vector<Point<dim>> &position) {
+        for (unsigned int i = 0; i < x.size(); ++i)
+          x[i] = position[membrane.support_point_node(i)];
+      };
+      for (unsigned int i = 0; i < x.size(); ++i)
+        dof_of_node[membrane.support_point_node(i)] = i;
+
+      auto remove_mean = [&](std::vector<double> &v) {
+        double mean = 0;
+        for (const double a : v)
+          mean += a / n;
+        for (double &a : v)
+          a -= mean;
+      };
+      // The Newton step solves K d = r with K the 1D bar stiffness of the
+      // loop along its arc, per cell of rest length L (its pieces' rest
+      // lengths added; the pieces of a cell are consecutive from element
+      // 0): EA/L [1 -1; -1 1] at degree 1, EA/(3L) [7 -8 1; -8 16 -8; 1 -8
+      // 7] at degree 2. The middle nodes condensed out (their loads go half
+      // to each vertex), the vertices form a ring of springs EA/L, solved
+      // directly: the spring forces F_c = F + (loads up to vertex c), F
+      // such that the stretches F_c L_c / EA add up to zero around the
+      // ring; the rigid slide along the loop is fixed by a zero mean shift.
+      auto solve = [&](const std::vector<double> &r) {
+        const unsigned int  n_cells = n / degree;
+        std::vector<double> L(n_cells, 0.), R(n_cells, 0.), d(n, 0.);
+        for (unsigned int c = 0; c < n_cells; ++c)
+          {
+            for (unsigned int k = 0; k < degree; ++k)
+              L[c] += membrane.rest_size[degree * c + k];
+            R[c] += r[degree * c];
+            if (degree == 2)
+              {
+                R[c] += 0.5 * r[2 * c + 1];
+                R[(c + 1) % n_cells] += 0.5 * r[2 * c + 1];
+              }
+          }
+        double              sum = 0, length = 0, loads = 0;
+        std::vector<double> F(n_cells);
+        for (unsigned int c = 0; c < n_cells; ++c)
+          {
+            sum += R[c];
+            F[c] = sum;
+            loads += F[c] * L[c];
+            length += L[c];
+          }
+        for (unsigned int c = 0; c < n_cells; ++c)
+          F[c] -= loads / length;
+        for (unsigned int c = 0; c + 1 < n_cells; ++c)
+          d[degree * (c + 1)] = d[degree * c] - F[c] * L[c] / EA;
+        if (degree == 2)
+          for (unsigned int c = 0; c < n_cells; ++c)
+            d[2 * c + 1] = (3 * L[c] * r[2 * c + 1] / EA + 8 * d[2 * c]
+                            + 8 * d[(2 * c + 2) % n])
+                           / 16;
+        remove_mean(d);
+        return d;
+      };
+
+      double max_shift = 0;
+      for (unsigned int step = 0; step < newton_steps; ++step)
+        {
+          gather(membrane.position);
+          const std::vector<Tensor<1, dim>> force  = fe.internal_forces(x);
+          const double                      energy = fe.strain_energy(x);
+          if (!(energy > 0))
+            break;
+          // The tangential forces (along the chord through the neighbours).
+          std::vector<double> r(n);
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              Tensor<1, dim> t = membrane.position[loop[(k + 1) % n]]
+                                 - membrane.position[loop[(k + n - 1) % n]];
+              if (t.norm() > 0)
+                t /= t.norm();
+              r[k] = force[dof_of_node[loop[k]]] * t;
+            }
+          remove_mean(r);
+          const std::vector<double> d = solve(r);
+
+          // The move along the loop, by a fraction of the Newton step if
+          // the whole one does not lower the strain energy.
+          std::vector<double> chord(n);
+          for (unsigned int k = 0; k < n; ++k)
+            chord[k] = membrane.position[loop[k]].distance(
+              membrane.position[loop[(k + 1) % n]]);
+          bool accepted = false;
+          for (double fraction = 1; fraction > 1. / 300 && !accepted;
+               fraction /= 2)
+            {
+              std::vector<Point<dim>> moved   = membrane.position;
+              double                  largest = 0;
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  // At most half a chord: the nodes keep their order.
+                  const unsigned int before = (k + n - 1) % n;
+                  const double       s      = std::clamp(fraction * d[k],
+                                              -0.5 * chord[before],
+                                              0.5 * chord[k]);
+                  moved[loop[k]]
+                    = s >= 0 ? (chord[k] > 0 ? point_on_loop(
+                                  membrane.position, loop, k, s / chord[k])
+                                             : membrane.position[loop[k]])
+                             : point_on_loop(membrane.position,
+                                             loop,
+                                             before,
+                                             1 + s / chord[before]);
+                  largest = std::max(largest, std::abs(s));
+                }
+              gather(moved);
+              const double moved_energy = fe.strain_energy(x);
+              if (moved_energy < energy)
+                {
+                  if (released)
+                    *released += energy - moved_energy;
+                  membrane.position = std::move(moved);
+                  max_shift         = std::max(max_shift, largest);
+                  accepted          = true;
+                }
+            }
+          if (!accepted)
+            break;
+        }
+      return max_shift;
     }
 
 
@@ -204,9 +372,12 @@ namespace fsgmpm
       return k_node;
     }
 
-#define FSGMPM_INSTANTIATE(dim)                                        \
-  template bool                applies<dim>(const Membrane<dim> &);    \
-  template double              equalize_stretch<dim>(Membrane<dim> &); \
+#define FSGMPM_INSTANTIATE(dim)                                                 \
+  template bool                applies<dim>(const Membrane<dim> &);             \
+  template double              equalize_stretch<dim>(Membrane<dim> &);          \
+  template double              relax_tangential_forces<dim>(Membrane<dim> &,    \
+                                               const unsigned int, \
+                                               double *);          \
   template std::vector<double> loop_axial_stiffness<dim>(const Membrane<dim> &);
     FSGMPM_INSTANTIATE(2)
     FSGMPM_INSTANTIATE(3)

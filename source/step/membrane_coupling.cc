@@ -255,8 +255,15 @@ namespace fsgmpm
   MembraneCoupling<dim>::relocate()
   {
     const unsigned int unknown = BackgroundGrid<dim>::invalid;
+    // The slip: by chord lengths at degree 1 (exact there), by relaxing
+    // the tangential forces at degree 2 (2D).
     if (membrane.tangential_slip)
-      MembraneSlip::equalize_stretch(membrane);
+      {
+        if (membrane.properties.element_degree == 1)
+          MembraneSlip::equalize_stretch(membrane);
+        else
+          MembraneSlip::relax_tangential_forces(membrane);
+      }
     if (split_length > 0)
       membrane.split_long_elements(split_length, unknown);
     const PointLocator<dim> locator(grid);

@@ -99,6 +99,13 @@ namespace fsgmpm
                     std::vector<SymmetricTensor<2, dim>> *cell_tension_tensor
                     = nullptr) const;
 
+    /// Strain energy of the cables (2D only) for the positions @p x: the
+    /// quadrature of EA/2 max(0, lambda - 1)^2 over the rest length, whose
+    /// negative gradient internal_forces() gives. The slip at degree 2
+    /// accepts a move only if it lowers this (MembraneSlip).
+    double
+    strain_energy(const std::vector<Point<dim>> &x) const;
+
     /// Lumped mass of each support point for the areal mass @p mu (kg/m^2,
     /// kg/m for cables): the diagonal of the consistent mass matrix scaled
     /// to the element's mass (HRZ lumping: positive at every node, also at

@@ -34,6 +34,27 @@ namespace fsgmpm
     double
     equalize_stretch(Membrane<dim> &membrane);
 
+    /// The slip at any element degree on a 2D loop (used at degree 2,
+    /// where placing the nodes by chord lengths is off by O((kappa h)^2)
+    /// against the quadratic cells' own stretch): moves the nodes along the
+    /// membrane until the tangential components of their internal forces
+    /// vanish, as a frictionless contact leaves them. Newton steps on the
+    /// nodes' shifts along the loop, with the loop's 1D bar stiffness
+    /// (the cells' EA on their rest lengths, cyclic) as the Jacobian,
+    /// solved by conjugate gradients with the mean shift held at zero; the
+    /// nodes are placed on circular arcs as equalize_stretch() places them,
+    /// and a step is taken only if it lowers the cables' strain energy
+    /// (halved up to 8 times otherwise), so the slip cannot create energy.
+    /// Returns the largest shift; does nothing (returns 0) unless dim = 2
+    /// and applies(). If @p released is given, it receives the strain
+    /// energy the moves removed (J per metre), which the caller books as
+    /// dissipated.
+    template <int dim>
+    double
+    relax_tangential_forces(Membrane<dim>     &membrane,
+                            const unsigned int newton_steps = 2,
+                            double            *released     = nullptr);
+
     /// Per node, a bound on the stiffness that the loop's length change
     /// gives it, (EA/L) |theta_a| sum_b |theta_b| (theta: turning angle at
     /// the node, floored at the circle's pi (l_a + l_{a-1}) / L; 3D: times

@@ -103,11 +103,12 @@ namespace fsgmpm
     double
     update_positions(const NodalFields<dim> &nodes, const double dt);
 
-    /// Stage 7m: the slip (MembraneSlip::equalize_stretch, if the membrane
-    /// slips along its fill), splits of cables longer than the split length,
-    /// the nodes' cells, and the element forces from the new positions.
-    /// Returns the number of nodes outside the mesh (their cell is
-    /// unchanged).
+    /// Stage 7m: the slip (if the membrane slips along its fill:
+    /// MembraneSlip::equalize_stretch at degree 1,
+    /// MembraneSlip::relax_tangential_forces at degree 2), splits of cables
+    /// longer than the split length, the nodes' cells, and the element
+    /// forces from the new positions. Returns the number of nodes outside
+    /// the mesh (their cell is unchanged).
     unsigned int
     relocate();
 
