@@ -13,6 +13,31 @@ namespace fsgmpm
   {
     namespace
     {
+      // Point at fraction t of loop chord e (from loop node e to e + 1), on
+      // the circle through loop nodes (e-1, e, e+1) and on the one through
+      // (e, e+1, e+2), averaged: exact on circular pieces, so the enclosed
+      // area is kept.
+      template <int dim>
+      Point<dim>
+      point_on_loop(const std::vector<Point<dim>>   &position,
+                    const std::vector<unsigned int> &node,
+                    const unsigned int               e,
+                    const double                     t)
+      {
+        const unsigned int n  = node.size();
+        const Point<dim>  &p0 = position[node[(e + n - 1) % n]],
+                         &p1  = position[node[e]],
+                         &p2  = position[node[(e + 1) % n]],
+                         &p3  = position[node[(e + 2) % n]];
+        const Point<dim> x
+          = MembraneGeometry::point_on_arc(p0, p1, p2, p1, p2, t);
+        const Point<dim> y
+          = MembraneGeometry::point_on_arc(p1, p2, p3, p1, p2, t);
+        return Point<dim>(0.5 * (x + y));
+      }
+
+
+
       // equalize_stretch() on one closed loop of nodes @p node with the
       // rest lengths of its edges, in x-y (a 3D ring in its plane).
       template <int dim>
@@ -39,22 +64,6 @@ namespace fsgmpm
           shift += s[k] - S[k] * length / rest;
         shift /= n;
 
-        // Point at fraction t of the arc from node e to node e+1, on the
-        // circle through (e-1, e, e+1) and on the one through (e, e+1,
-        // e+2), averaged: exact on circular pieces, so the enclosed area is
-        // kept.
-        auto curve = [&](const unsigned int e, const double t) {
-          const Point<dim> &p0 = position[node[(e + n - 1) % n]],
-                           &p1 = position[node[e]],
-                           &p2 = position[node[(e + 1) % n]],
-                           &p3 = position[node[(e + 2) % n]];
-          const Point<dim> x
-            = MembraneGeometry::point_on_arc(p0, p1, p2, p1, p2, t);
-          const Point<dim> y
-            = MembraneGeometry::point_on_arc(p1, p2, p3, p1, p2, t);
-          return Point<dim>(0.5 * (x + y));
-        };
-
         std::vector<Point<dim>> moved(n);
         double                  max_move = 0;
         unsigned int            e        = 0;
@@ -69,7 +78,7 @@ namespace fsgmpm
               e = (e + 1) % n;
             const double t
               = (s[e + 1] > s[e]) ? (target - s[e]) / (s[e + 1] - s[e]) : 0.;
-            moved[k] = curve(e, t);
+            moved[k] = point_on_loop(position, node, e, t);
             max_move = std::max(max_move, moved[k].distance(position[node[k]]));
           }
         for (unsigned int k = 0; k < n; ++k)
@@ -77,26 +86,6 @@ namespace fsgmpm
         return max_move;
       }
 
-      // Point at fraction t of loop chord e (from loop node e to e + 1) on
-      // the circles through its neighbours, as in equalize_loop().
-      template <int dim>
-      Point<dim>
-      point_on_loop(const std::vector<Point<dim>>   &position,
-                    const std::vector<unsigned int> &node,
-                    const unsigned int               e,
-                    const double                     t)
-      {
-        const unsigned int n  = node.size();
-        const Point<dim>  &p0 = position[node[(e + n - 1) % n]],
-                         &p1  = position[node[e]],
-                         &p2  = position[node[(e + 1) % n]],
-                         &p3  = position[node[(e + 2) % n]];
-        const Point<dim> x
-          = MembraneGeometry::point_on_arc(p0, p1, p2, p1, p2, t);
-        const Point<dim> y
-          = MembraneGeometry::point_on_arc(p1, p2, p3, p1, p2, t);
-        return Point<dim>(0.5 * (x + y));
-      }
     } // namespace
 
 
