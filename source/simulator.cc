@@ -331,20 +331,6 @@ namespace fsgmpm
     if (description.shape != "gmsh")
       membrane_outline = description.outline(h);
 
-    // The frictionless slip at degree 2 relaxes the tangential forces of a
-    // 2D loop (MembraneSlip::relax_tangential_forces); the 3D slab's slip
-    // (stacks tied, rings equalized by chord lengths) is degree-1 geometry:
-    // on quadratic cells it is off by O((kappa h)^2) against the cells' own
-    // stretch, a strain as large as the geotube's real one
-    // (doc/membrane_validation.md, "Quadratic membrane elements").
-    AssertThrow(description.properties.element_degree == 1 || dim == 2
-                  || !description.tangential_slip,
-                ExcMessage("Membrane/Element degree = 2 cannot be combined "
-                           "with Membrane/Tangential coupling = slip in 3D "
-                           "(the slab's slip spreads the stretch by chord "
-                           "lengths, which quadratic elements do not "
-                           "follow); use the paper's no-slip coupling, or "
-                           "degree 1."));
     Triangulation<dim - 1, dim>                                 mesh;
     std::map<std::pair<unsigned int, unsigned int>, Point<dim>> middle_points;
     description.make_mesh(h, membrane_z_range, mesh, &middle_points);

@@ -268,9 +268,6 @@ namespace fsgmpm
   double
   MembraneFE<dim>::strain_energy(const std::vector<Point<dim>> &x) const
   {
-    AssertThrow(dim == 2,
-                ExcMessage("MembraneFE::strain_energy() is that of the 2D "
-                           "cables only."));
     AssertThrow(x.size() == n_support_points(),
                 ExcMessage("MembraneFE: one position per support point "
                            "is needed."));
@@ -281,11 +278,29 @@ namespace fsgmpm
         {
           const unsigned int cq = c * n_q_points + q;
           const double      *dN = &tangent_derivative[cq * n_dofs * (dim - 1)];
-          Tensor<1, dim>     g;
+          std::array<Tensor<1, dim>, dim - 1> g;
           for (unsigned int i = 0; i < n_dofs; ++i)
-            g += dN[i * (dim - 1)] * x[cell_dofs[c * n_dofs + i]];
-          const double strain = std::max(0., g.norm() - 1.);
-          energy += 0.5 * EA * strain * strain * JxW[cq];
+            for (unsigned int a = 0; a < dim - 1; ++a)
+              g[a] += dN[i * (dim - 1) + a] * x[cell_dofs[c * n_dofs + i]];
+          if constexpr (dim == 2)
+            {
+              const double strain = std::max(0., g[0].norm() - 1.);
+              energy += 0.5 * EA * strain * strain * JxW[cq];
+            }
+          else
+            {
+              // S : E / 2 with the Green strain E_ab = (g_a . g_b - d_ab)/2:
+              // the Saint Venant-Kirchhoff energy where the membrane is taut
+              // (internal_forces() is then its negative gradient); with the
+              // cut-off, the energy of the stress that is kept.
+              const MembraneMechanics::PlaneStress S
+                = MembraneMechanics::cut_off_svk_stress(g[0], g[1], EA, nu);
+              const double E00 = 0.5 * (g[0] * g[0] - 1.),
+                           E11 = 0.5 * (g[1] * g[1] - 1.),
+                           E01 = 0.5 * g[0] * g[1];
+              energy
+                += 0.5 * (S[0] * E00 + S[1] * E11 + 2. * S[2] * E01) * JxW[cq];
+            }
         }
     return energy;
   }

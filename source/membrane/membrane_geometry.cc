@@ -517,6 +517,48 @@ namespace fsgmpm
               cells.push_back(t2);
             }
         mesh.create_triangulation(vertices, cells, SubCellData());
+        // Degree 2: the middle nodes of the edges along the outline and of
+        // the diagonals on the arcs through the neighbouring outline
+        // points (averaged over the two arcs, as the 2D loop's), so that
+        // the rest surface is curved as the membrane is (straight rest
+        // cells pushed onto the curve would carry a strain (kappa h)^2/24,
+        // as large as a geotube's own); those of the edges along z halfway
+        // up. The nodes stacked above one another keep one x-y.
+        if (edge_middle_points)
+          {
+            edge_middle_points->clear();
+            std::vector<Point<2>> middle(n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const Point<2> &p0 = outline[(i + n - 1) % n], &p1 = outline[i],
+                               &p2 = outline[(i + 1) % n],
+                               &p3 = outline[(i + 2) % n];
+                middle[i]          = Point<2>(
+                  0.5
+                  * (MembraneGeometry::point_on_arc(p0, p1, p2, p1, p2, 0.5)
+                     + MembraneGeometry::point_on_arc(
+                       p1, p2, p3, p1, p2, 0.5)));
+              }
+            auto add = [&](const unsigned int a,
+                           const unsigned int b,
+                           const Point<2>    &xy) {
+              (*edge_middle_points)[{std::min(a, b), std::max(a, b)}]
+                = Point<3>(xy[0],
+                           xy[1],
+                           0.5 * (vertices[a][2] + vertices[b][2]));
+            };
+            for (unsigned int k = 0; k <= nz; ++k)
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int a = k * n + i, b = k * n + (i + 1) % n;
+                  add(a, b, middle[i]);
+                  if (k < nz)
+                    {
+                      add(a, b + n, middle[i]);
+                      add(a, a + n, outline[i]);
+                    }
+                }
+          }
       }
   }
 

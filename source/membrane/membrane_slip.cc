@@ -156,23 +156,96 @@ namespace fsgmpm
     {
       if (released)
         *released = 0;
-      if (dim != 2 || !applies(membrane))
+      if (!applies(membrane))
         return 0;
-      const MembraneFE<dim>          &fe     = membrane.get_fe();
-      const std::vector<unsigned int> loop   = membrane.loop_nodes();
-      const unsigned int              n      = loop.size();
-      const unsigned int              degree = fe.get_degree();
-      const double                    EA = membrane.properties.axial_stiffness;
+      const MembraneFE<dim> &fe       = membrane.get_fe();
+      const unsigned int     degree   = fe.get_degree();
+      auto                  &position = membrane.position;
+
       // The support points' positions, and the support point of each node.
       std::vector<unsigned int> dof_of_node(membrane.n_nodes(), 0);
       std::vector<Point<dim>>   x(fe.n_support_points());
-      auto gather = [&](const std::vector<Point<dim>> &position) {
+      auto                      gather = [&](const std::vector<Point<dim>> &p) {
         for (unsigned int i = 0; i < x.size(); ++i)
-          x[i] = position[membrane.support_point_node(i)];
+          x[i] = p[membrane.support_point_node(i)];
       };
       for (unsigned int i = 0; i < x.size(); ++i)
         dof_of_node[membrane.support_point_node(i)] = i;
 
+      // The energy released is measured from the start (3D: the tying of
+      // the stacks included).
+      double start_energy = 0;
+      if (released)
+        {
+          gather(position);
+          start_energy = fe.strain_energy(x);
+        }
+
+      // The loop the nodes slide along, starting at a cell's vertex, the
+      // rest lengths of its pieces and the bar stiffness along it. 2D: the
+      // cables. 3D (an extrusion in a slab with roller faces): the first
+      // ring, each of its nodes carrying the nodes stacked above it (the
+      // same x-y, as equalize_stretch() ties them), and the stiffness of
+      // the whole height in plane strain, EA H / (1 - nu^2).
+      std::vector<unsigned int>              loop;
+      std::vector<double>                    rest;
+      std::vector<std::vector<unsigned int>> stack;
+      double EA        = membrane.properties.axial_stiffness;
+      double max_shift = 0;
+      if constexpr (dim == 2)
+        {
+          loop = membrane.loop_nodes();
+          rest = membrane.rest_size;
+          for (const unsigned int a : loop)
+            stack.push_back({a});
+        }
+      else
+        {
+          const auto &rings = membrane.rings;
+          loop              = rings[0];
+          rest              = membrane.ring_rest_length[0];
+          if (degree == 2
+              && std::find(membrane.vertex_node.begin(),
+                           membrane.vertex_node.end(),
+                           loop[0])
+                   == membrane.vertex_node.end())
+            {
+              std::rotate(loop.begin(), loop.begin() + 1, loop.end());
+              std::rotate(rest.begin(), rest.begin() + 1, rest.end());
+            }
+          const unsigned int first = rings[0][0] == loop[0] ? 0 : 1;
+          stack.resize(loop.size());
+          for (unsigned int k = 0; k < loop.size(); ++k)
+            for (const auto &ring : rings)
+              stack[k].push_back(ring[(k + first) % loop.size()]);
+          const double height = std::abs(position[rings.back()[0]][dim - 1]
+                                         - position[rings[0][0]][dim - 1]);
+          const double nu     = membrane.properties.poisson_ratio;
+          EA *= height / (1 - nu * nu);
+          // Tie the stacks (their mean x-y), as equalize_stretch() does.
+          for (const auto &nodes : stack)
+            {
+              double x = 0, y = 0;
+              for (const unsigned int a : nodes)
+                {
+                  x += position[a][0] / nodes.size();
+                  y += position[a][1] / nodes.size();
+                }
+              for (const unsigned int a : nodes)
+                {
+                  max_shift      = std::max(max_shift,
+                                       std::hypot(position[a][0] - x,
+                                                  position[a][1] - y));
+                  position[a][0] = x;
+                  position[a][1] = y;
+                }
+            }
+        }
+      const unsigned int n = loop.size();
+      AssertThrow(n % degree == 0 && rest.size() == n,
+                  ExcMessage("The membrane's slip loop does not hold whole "
+                             "cells of degree "
+                             + std::to_string(degree) + "."));
       auto remove_mean = [&](std::vector<double> &v) {
         double mean = 0;
         for (const double a : v)
@@ -195,7 +268,7 @@ namespace fsgmpm
         for (unsigned int c = 0; c < n_cells; ++c)
           {
             for (unsigned int k = 0; k < degree; ++k)
-              L[c] += membrane.rest_size[degree * c + k];
+              L[c] += rest[degree * c + k];
             R[c] += r[degree * c];
             if (degree == 2)
               {
@@ -225,38 +298,49 @@ namespace fsgmpm
         return d;
       };
 
-      double max_shift = 0;
+      double energy = -1;
       for (unsigned int step = 0; step < newton_steps; ++step)
         {
-          gather(membrane.position);
-          const std::vector<Tensor<1, dim>> force  = fe.internal_forces(x);
-          const double                      energy = fe.strain_energy(x);
+          gather(position);
+          const std::vector<Tensor<1, dim>> force = fe.internal_forces(x);
+          // The energy is known after an accepted, tested step.
+          if (!(energy >= 0))
+            energy = fe.strain_energy(x);
           if (!(energy > 0))
             break;
-          // The tangential forces (along the chord through the neighbours).
-          std::vector<double> r(n);
+          // The tangential forces (along the chord through the neighbours),
+          // of each stack.
+          std::vector<double> r(n, 0.);
           for (unsigned int k = 0; k < n; ++k)
             {
-              Tensor<1, dim> t = membrane.position[loop[(k + 1) % n]]
-                                 - membrane.position[loop[(k + n - 1) % n]];
+              Tensor<1, dim> t
+                = position[loop[(k + 1) % n]] - position[loop[(k + n - 1) % n]];
               if (t.norm() > 0)
                 t /= t.norm();
-              r[k] = force[dof_of_node[loop[k]]] * t;
+              for (const unsigned int a : stack[k])
+                r[k] += force[dof_of_node[a]] * t;
             }
           remove_mean(r);
           const std::vector<double> d = solve(r);
+          // Nearly converged, the Newton step lowers the energy by r.d / 2,
+          // below what the energy's round-off can show: it is taken without
+          // the energy test (which could only guess, after up to 9
+          // evaluations).
+          double predicted = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            predicted += 0.5 * r[k] * d[k];
+          const bool below_round_off = !(predicted > 1e-12 * energy);
 
           // The move along the loop, by a fraction of the Newton step if
           // the whole one does not lower the strain energy.
           std::vector<double> chord(n);
           for (unsigned int k = 0; k < n; ++k)
-            chord[k] = membrane.position[loop[k]].distance(
-              membrane.position[loop[(k + 1) % n]]);
+            chord[k] = position[loop[k]].distance(position[loop[(k + 1) % n]]);
           bool accepted = false;
           for (double fraction = 1; fraction > 1. / 300 && !accepted;
                fraction /= 2)
             {
-              std::vector<Point<dim>> moved   = membrane.position;
+              std::vector<Point<dim>> moved   = position;
               double                  largest = 0;
               for (unsigned int k = 0; k < n; ++k)
                 {
@@ -265,29 +349,45 @@ namespace fsgmpm
                   const double       s      = std::clamp(fraction * d[k],
                                               -0.5 * chord[before],
                                               0.5 * chord[k]);
-                  moved[loop[k]]
-                    = s >= 0 ? (chord[k] > 0 ? point_on_loop(
-                                  membrane.position, loop, k, s / chord[k])
-                                             : membrane.position[loop[k]])
-                             : point_on_loop(membrane.position,
-                                             loop,
-                                             before,
-                                             1 + s / chord[before]);
+                  const Point<dim>   p
+                    = s >= 0
+                        ? (chord[k] > 0
+                             ? point_on_loop(position, loop, k, s / chord[k])
+                             : position[loop[k]])
+                        : point_on_loop(position,
+                                        loop,
+                                        before,
+                                        1 + s / chord[before]);
+                  for (const unsigned int a : stack[k])
+                    for (unsigned int d = 0; d < 2; ++d)
+                      moved[a][d] = p[d];
                   largest = std::max(largest, std::abs(s));
+                }
+              if (below_round_off)
+                {
+                  energy    = -1;
+                  position  = std::move(moved);
+                  max_shift = std::max(max_shift, largest);
+                  accepted  = true;
+                  break;
                 }
               gather(moved);
               const double moved_energy = fe.strain_energy(x);
               if (moved_energy < energy)
                 {
-                  if (released)
-                    *released += energy - moved_energy;
-                  membrane.position = std::move(moved);
-                  max_shift         = std::max(max_shift, largest);
-                  accepted          = true;
+                  energy    = moved_energy;
+                  position  = std::move(moved);
+                  max_shift = std::max(max_shift, largest);
+                  accepted  = true;
                 }
             }
           if (!accepted)
             break;
+        }
+      if (released)
+        {
+          gather(position);
+          *released = start_energy - fe.strain_energy(x);
         }
       return max_shift;
     }

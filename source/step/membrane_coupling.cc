@@ -256,7 +256,7 @@ namespace fsgmpm
   {
     const unsigned int unknown = BackgroundGrid<dim>::invalid;
     // The slip: by chord lengths at degree 1 (exact there), by relaxing
-    // the tangential forces at degree 2 (2D).
+    // the tangential forces at degree 2.
     if (membrane.tangential_slip)
       {
         if (membrane.properties.element_degree == 1)

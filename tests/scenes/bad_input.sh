@@ -50,7 +50,6 @@ expect_error "f_c = 1" "Free surface threshold" --set "Bodies/Body 0/Free surfac
 expect_error "negative bulk modulus" "Bulk modulus" --set "Bodies/Body 0/Newtonian fluid/Bulk modulus=-2e9"
 expect_error "unknown material" "Material model" --set "Bodies/Body 0/Material model=honey"
 expect_error "NMD with the nodal stress projection" "Volumetric smoothing = NMD\+ANP cannot be combined" --set "Simulation/Stress integration=nodal projection" --set "Bodies/Body 0/Volumetric smoothing=NMD+ANP"
-expect_error "quadratic membrane with slip in 3D" "Membrane/Element degree = 2 cannot be combined with Membrane/Tangential coupling = slip in 3D" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Element degree=2"
 expect_error "3D slip on a Gmsh membrane" "slip needs a 2D membrane or, in 3D, an extruded one" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh"
 expect_error "membrane DataOut in HDF5" "Membrane output = finite elements is written as VTU" "$2/../prm/geotube_A5.56.prm" --set "Output/Format=hdf5" --set "Output/Membrane output=finite elements"
 expect_error "missing Gmsh membrane" "Membrane/Mesh file: cannot open the Gmsh file <no_such_membrane.msh>" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh" --set "Membrane/Tangential coupling=no-slip" --set "Membrane/Mesh file=no_such_membrane.msh"

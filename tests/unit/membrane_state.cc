@@ -40,6 +40,7 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <map>
 
 using namespace fsgmpm;
 
@@ -627,7 +628,7 @@ TEST(MembraneState, DegreeTwoRingStructureStretchAndSplit)
 // here is the uniform stretch: the nodes equally spaced in angle again
 // (each cell's quadratic then is the rest one scaled, tension EA 0.01
 // exactly), up to a common rotation. The nodes stay on the circle (the
-// arcs' placement) and every accepted step lowers the strain energy.
+// arcs' placement) and the strain energy never rises (beyond round-off).
 TEST(MembraneState, SlipAtDegreeTwoRelaxesTheTangentialForces)
 {
   const unsigned int n                 = 16;
@@ -672,7 +673,9 @@ TEST(MembraneState, SlipAtDegreeTwoRelaxesTheTangentialForces)
       double released = -1;
       MembraneSlip::relax_tangential_forces(m, 2, &released);
       const double e = m.get_fe().strain_energy(dof_positions());
-      EXPECT_LE(e, energy);
+      // Steps whose predicted drop is below the energy's round-off are
+      // taken untested: the energy may rise by round-off then.
+      EXPECT_LE(e, energy * (1 + 1e-14));
       EXPECT_NEAR(released, energy - e, 1e-9 * energy_0);
       energy = e;
       std::printf("measured pass %u: largest tangential force %.3e N, "
@@ -707,14 +710,184 @@ TEST(MembraneState, SlipAtDegreeTwoRelaxesTheTangentialForces)
               t_min,
               t_max,
               T);
-  // Measured: 2.7e4 N -> 1.5e-5 N (the energy test stops at round-off; the
-  // perturbation changes the spacing by up to 60%, so the first passes
-  // take clamped or halved steps), spacing error 1.1e-11 rad.
+  // Measured: 2.7e4 N -> 3.4e-10 N (the perturbation changes the spacing
+  // by up to 60%, so the first passes take clamped or halved steps; the
+  // last ones are below the energy's round-off), spacing error 6.7e-16 rad.
   EXPECT_GT(tangential_0, 10.);
-  EXPECT_LT(tangential(), 1e-7 * T);
-  EXPECT_LT(spacing, 1e-10);
+  EXPECT_LT(tangential(), 2e-9);
+  EXPECT_LT(spacing, 1e-13);
   EXPECT_NEAR(t_min, T, 1e-8 * T);
   EXPECT_NEAR(t_max, T, 1e-8 * T);
+}
+
+
+
+// The slip at degree 2 on an extruded membrane (3D slab, plane strain):
+// a cylinder of radius 1 and height 0.1 m, 16 quadratic triangles around
+// and two layers, with its middle nodes on the cylinder (curved rest
+// cells, as a Gmsh mesh of second-order triangles gives), the nodes moved
+// unevenly along the rings (differently at every level) and stretched by
+// 1%. The relaxation ties each stack to its mean x-y and removes the
+// stacks' tangential forces: the result does not depend on the
+// perturbation (the same spacing as when relaxing the evenly spaced
+// cylinder, whose diagonals leave a small tangential force), every node
+// stays on the cylinder and in its z plane, and the strain energy never
+// rises.
+TEST(MembraneState, SlipAtDegreeTwoOnExtrudedMembraneRings)
+{
+  const unsigned int    n = 16, nz = 2;
+  const double          height = 0.1;
+  std::vector<Point<3>> vertices;
+  for (unsigned int k = 0; k <= nz; ++k)
+    for (unsigned int i = 0; i < n; ++i)
+      vertices.emplace_back(std::cos(2 * M_PI * i / n),
+                            std::sin(2 * M_PI * i / n),
+                            height * k / nz);
+  std::vector<CellData<2>>                                  cells;
+  std::map<std::pair<unsigned int, unsigned int>, Point<3>> middle;
+  auto on_cylinder = [&](const unsigned int a, const unsigned int b) {
+    // The point of the cylinder halfway between vertices a and b.
+    const double t = std::atan2(vertices[a][1] + vertices[b][1],
+                                vertices[a][0] + vertices[b][0]);
+    middle[{std::min(a, b), std::max(a, b)}]
+      = Point<3>(std::cos(t),
+                 std::sin(t),
+                 0.5 * (vertices[a][2] + vertices[b][2]));
+  };
+  for (unsigned int k = 0; k < nz; ++k)
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const unsigned int a = k * n + i, b = k * n + (i + 1) % n, c = a + n,
+                           d = b + n;
+        CellData<2> t1(3), t2(3);
+        t1.vertices = {a, b, d};
+        t2.vertices = {a, d, c};
+        cells.push_back(t1);
+        cells.push_back(t2);
+        on_cylinder(a, b);
+        on_cylinder(b, d);
+        on_cylinder(a, d);
+        on_cylinder(a, c);
+        on_cylinder(c, d);
+      }
+  Triangulation<2, 3> mesh;
+  mesh.create_triangulation(vertices, cells, SubCellData());
+  MembraneProperties props;
+  props.axial_stiffness = 1e5;
+  props.element_degree  = 2;
+
+  // Relaxes the cylinder stretched by 1%, its nodes moved along the rings
+  // by w(z) sin(3 j) of the spacing; returns the angles between stacks.
+  auto relax = [&](const double amplitude, const double tie) {
+    Membrane<3> m(mesh, props, middle);
+    m.tangential_slip = true;
+    EXPECT_EQ(m.rings.size(), 2 * nz + 1);
+    for (const auto &ring : m.rings)
+      EXPECT_EQ(ring.size(), 2 * n);
+    for (unsigned int a = 0; a < m.n_nodes(); ++a)
+      {
+        const double angle = std::atan2(m.position[a][1], m.position[a][0]);
+        const double j     = std::round(angle * n / M_PI);
+        const double w     = amplitude * (1 + tie * m.position[a][2] / height);
+        const double t     = M_PI * (j + w * std::sin(3. * j)) / n;
+        m.position[a]
+          = Point<3>(1.01 * std::cos(t), 1.01 * std::sin(t), m.position[a][2]);
+      }
+    const std::vector<Point<3>> before = m.position;
+    auto                        x      = [&]() {
+      std::vector<Point<3>> p(m.get_fe().n_support_points());
+      for (unsigned int i = 0; i < p.size(); ++i)
+        p[i] = m.position[m.support_point_node(i)];
+      return p;
+    };
+    // The largest tangential force of a stack (summed over its nodes).
+    auto tangential = [&]() {
+      const std::vector<Tensor<1, 3>> f = m.get_fe().internal_forces(x());
+      std::vector<Tensor<1, 3>>       on_node(m.n_nodes());
+      for (unsigned int i = 0; i < f.size(); ++i)
+        on_node[m.support_point_node(i)] = f[i];
+      double largest = 0;
+      for (unsigned int k = 0; k < 2 * n; ++k)
+        {
+          const Point<3>    &p = m.position[m.rings[0][k]];
+          const Tensor<1, 3> t({-p[1], p[0], 0.});
+          double             sum = 0;
+          for (const auto &ring : m.rings)
+            sum += on_node[ring[k]] * t / t.norm();
+          largest = std::max(largest, std::abs(sum));
+        }
+      return largest;
+    };
+    const double energy_0 = m.get_fe().strain_energy(x());
+    const double force_0  = tangential();
+    double       energy   = energy_0;
+    for (unsigned int pass = 0; pass < 8; ++pass)
+      {
+        double released = -1;
+        MembraneSlip::relax_tangential_forces(m, 2, &released);
+        const double e = m.get_fe().strain_energy(x());
+        EXPECT_LE(e, energy * (1 + 1e-14));
+        EXPECT_NEAR(released, energy - e, 1e-9 * energy_0);
+        energy = e;
+      }
+    const double force = tangential();
+    std::printf("measured 3D degree 2, perturbation %.2f: largest stack "
+                "tangential force %.3e -> %.3e N, strain energy %.6e -> "
+                "%.6e J\n",
+                amplitude,
+                force_0,
+                force,
+                energy_0,
+                energy);
+    // T = EA 0.01 / (1 - nu^2) = 1.1e3 N/m over 0.1 m: 110 N on a stack.
+    // Measured 9.0e-11 N (the even start's round-off floor 7.5e-11 N);
+    // tied, 5.0e-6 N: the stacks then lie off the circle, and the arcs
+    // through three nodes that place them are no longer the curve, whose
+    // tangent the forces are taken along.
+    EXPECT_LT(force, tie > 0 ? 2e-5 : 1e-9);
+    for (unsigned int a = 0; a < m.n_nodes(); ++a)
+      {
+        EXPECT_EQ(m.position[a][2], before[a][2]);
+        // Tied stacks lie inside the cylinder by about
+        // r (1 - cos(spread / 2)), here 3e-7.
+        EXPECT_NEAR(std::hypot(m.position[a][0], m.position[a][1]),
+                    1.01,
+                    tie > 0 ? 1e-6 : 1e-12);
+      }
+    std::vector<double> angles;
+    for (unsigned int k = 0; k < 2 * n; ++k)
+      {
+        for (const auto &ring : m.rings)
+          {
+            EXPECT_EQ(m.position[ring[k]][0], m.position[m.rings[0][k]][0]);
+            EXPECT_EQ(m.position[ring[k]][1], m.position[m.rings[0][k]][1]);
+          }
+        const Point<3> &p = m.position[m.rings[0][k]],
+                       &q = m.position[m.rings[0][(k + 1) % (2 * n)]];
+        double d          = std::atan2(q[1], q[0]) - std::atan2(p[1], p[0]);
+        angles.push_back(d < 0 ? d + 2 * M_PI : d);
+      }
+    return std::make_pair(angles, force_0);
+  };
+  const auto [even, force_even]     = relax(0., 0.);
+  const auto [uneven, force_uneven] = relax(0.05, 0.);
+  // Moved differently at every level: the stacks are tied first.
+  relax(0.02, 0.5);
+  double difference = 0, from_equal = 0;
+  for (unsigned int k = 0; k < 2 * n; ++k)
+    {
+      difference = std::max(difference, std::abs(uneven[k] - even[k]));
+      from_equal = std::max(from_equal, std::abs(even[k] - M_PI / n));
+    }
+  std::printf("measured: spacing of the relaxed stacks, uneven against even "
+              "start %.2e rad; even start against equal spacing %.2e rad\n",
+              difference,
+              from_equal);
+  // Measured 8.9e-16 and 1.6e-15 rad: the diagonals' direction leaves no
+  // tangential force on the evenly spaced cylinder.
+  EXPECT_GT(force_uneven, 1e3);
+  EXPECT_LT(difference, 1e-12);
+  EXPECT_LT(from_equal, 1e-12);
 }
 
 

@@ -99,10 +99,12 @@ namespace fsgmpm
                     std::vector<SymmetricTensor<2, dim>> *cell_tension_tensor
                     = nullptr) const;
 
-    /// Strain energy of the cables (2D only) for the positions @p x: the
-    /// quadrature of EA/2 max(0, lambda - 1)^2 over the rest length, whose
-    /// negative gradient internal_forces() gives. The slip at degree 2
-    /// accepts a move only if it lowers this (MembraneSlip).
+    /// Strain energy for the positions @p x: 2D cables, the quadrature of
+    /// EA/2 max(0, lambda - 1)^2 over the rest length; 3D, of S : E / 2
+    /// (the Saint Venant-Kirchhoff energy where the membrane is taut; with
+    /// the compression cut-off, that of the stress kept). internal_forces()
+    /// is its negative gradient wherever no cut-off acts. The slip at degree
+    /// 2 accepts a move only if it lowers this (MembraneSlip).
     double
     strain_energy(const std::vector<Point<dim>> &x) const;
 

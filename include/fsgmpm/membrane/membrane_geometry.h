@@ -56,7 +56,9 @@ namespace fsgmpm
     /// extruded surface over z in [z0, z1] or the Gmsh surface in 3D. A
     /// Gmsh surface of second-order (6-node) triangles also gives the
     /// middle nodes of its curved edges in @p edge_middle_points (if
-    /// given), for Membrane's constructor.
+    /// given), for Membrane's constructor; the extruded surface gives
+    /// middle nodes on the arcs through the outline's points (a curved
+    /// rest surface at degree 2).
     void
     make_mesh(const double                     cell_size,
               const std::pair<double, double> &z_range,
