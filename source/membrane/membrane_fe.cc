@@ -22,6 +22,23 @@ namespace fsgmpm
                              + std::to_string(degree) + "."));
       return degree;
     }
+
+    // The deformed tangents g_a = F t_a = sum_i x_i dN_i/dt_a at one
+    // quadrature point, from its shape derivatives @p dN (dN[i][a] = grad
+    // N_i . t_a on the rest surface) and the cell's support points @p dofs.
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    deformed_tangents(const double                  *dN,
+                      const types::global_dof_index *dofs,
+                      const unsigned int             n_dofs,
+                      const std::vector<Point<dim>> &x)
+    {
+      std::array<Tensor<1, dim>, dim - 1> g;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          g[a] += dN[i * (dim - 1) + a] * x[dofs[i]];
+      return g;
+    }
   } // namespace
 
 
@@ -186,11 +203,8 @@ namespace fsgmpm
             const unsigned int cq = c * n_q_points + q;
             // dN[i][a] = grad N_i . t_a on the rest surface.
             const double *dN = &tangent_derivative[cq * n_dofs * (dim - 1)];
-            // g_a = F t_a = sum_i x_i dN_i/dt_a.
-            std::array<Tensor<1, dim>, dim - 1> g;
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              for (unsigned int a = 0; a < dim - 1; ++a)
-                g[a] += dN[i * (dim - 1) + a] * x[dofs[i]];
+            const std::array<Tensor<1, dim>, dim - 1> g
+              = deformed_tangents(dN, dofs, n_dofs, x);
             // P t_b: the first Piola-Kirchhoff stress against the rest
             // tangents, f_i = -int sum_b (P t_b) dN_i/dt_b dA.
             std::array<Tensor<1, dim>, dim - 1> P;
@@ -276,12 +290,12 @@ namespace fsgmpm
     for (unsigned int c = 0; c < triangulation.n_active_cells(); ++c)
       for (unsigned int q = 0; q < n_q_points; ++q)
         {
-          const unsigned int cq = c * n_q_points + q;
-          const double      *dN = &tangent_derivative[cq * n_dofs * (dim - 1)];
-          std::array<Tensor<1, dim>, dim - 1> g;
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            for (unsigned int a = 0; a < dim - 1; ++a)
-              g[a] += dN[i * (dim - 1) + a] * x[cell_dofs[c * n_dofs + i]];
+          const unsigned int                        cq = c * n_q_points + q;
+          const std::array<Tensor<1, dim>, dim - 1> g
+            = deformed_tangents(&tangent_derivative[cq * n_dofs * (dim - 1)],
+                                &cell_dofs[c * n_dofs],
+                                n_dofs,
+                                x);
           if constexpr (dim == 2)
             {
               const double strain = std::max(0., g[0].norm() - 1.);

@@ -38,6 +38,35 @@ namespace fsgmpm
 
 
 
+      // Ties the nodes stacked along z (ring[k] of every ring) to their
+      // mean x-y: the slab's plane strain. Returns the largest move.
+      template <int dim>
+      double
+      tie_stacks(std::vector<Point<dim>>                      &position,
+                 const std::vector<std::vector<unsigned int>> &rings)
+      {
+        double max_move = 0;
+        for (unsigned int k = 0; k < rings[0].size(); ++k)
+          {
+            double x = 0, y = 0;
+            for (const auto &ring : rings)
+              {
+                x += position[ring[k]][0] / rings.size();
+                y += position[ring[k]][1] / rings.size();
+              }
+            for (const auto &ring : rings)
+              {
+                Point<dim> &p = position[ring[k]];
+                max_move = std::max(max_move, std::hypot(p[0] - x, p[1] - y));
+                p[0]     = x;
+                p[1]     = y;
+              }
+          }
+        return max_move;
+      }
+
+
+
       // equalize_stretch() on one closed loop of nodes @p node with the
       // rest lengths of its edges, in x-y (a 3D ring in its plane).
       template <int dim>
@@ -120,17 +149,7 @@ namespace fsgmpm
           const auto                   &rings        = membrane.rings;
           const std::vector<Point<dim>> old_position = position;
           const unsigned int            n            = rings[0].size();
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              double x = 0, y = 0;
-              for (const auto &ring : rings)
-                {
-                  x += position[ring[k]][0] / rings.size();
-                  y += position[ring[k]][1] / rings.size();
-                }
-              position[rings[0][k]][0] = x;
-              position[rings[0][k]][1] = y;
-            }
+          tie_stacks(position, rings);
           equalize_loop(position, rings[0], membrane.ring_rest_length[0]);
           double max_move = 0;
           for (const auto &ring : rings)
@@ -223,23 +242,7 @@ namespace fsgmpm
           const double nu     = membrane.properties.poisson_ratio;
           EA *= height / (1 - nu * nu);
           // Tie the stacks (their mean x-y), as equalize_stretch() does.
-          for (const auto &nodes : stack)
-            {
-              double x = 0, y = 0;
-              for (const unsigned int a : nodes)
-                {
-                  x += position[a][0] / nodes.size();
-                  y += position[a][1] / nodes.size();
-                }
-              for (const unsigned int a : nodes)
-                {
-                  max_shift      = std::max(max_shift,
-                                       std::hypot(position[a][0] - x,
-                                                  position[a][1] - y));
-                  position[a][0] = x;
-                  position[a][1] = y;
-                }
-            }
+          max_shift = tie_stacks(position, rings);
         }
       const unsigned int n = loop.size();
       AssertThrow(n % degree == 0 && rest.size() == n,
