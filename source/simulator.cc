@@ -698,7 +698,8 @@ namespace fsgmpm
     using Clock       = std::chrono::steady_clock;
     const auto  start = Clock::now();
     const auto &dir   = params.output_directory;
-    // With MPI, rank 0 writes every file (the others send it their points).
+    // With MPI, rank 0 writes every file but the points' (each process
+    // writes its own: RunOutput).
     if (root)
       {
         fs::create_directories(dir);
@@ -710,17 +711,21 @@ namespace fsgmpm
           }
       }
 
-    output = std::make_unique<RunOutput<dim>>(
-      typename RunOutput<dim>::Settings{dir,
-                                        params.output_format == "hdf5",
-                                        params.membrane_output
-                                          == "finite elements",
-                                        params.write_particles,
-                                        params.write_grid});
+    output = std::make_unique<RunOutput<dim>>(typename RunOutput<dim>::Settings{
+      dir,
+      params.output_format == "hdf5",
+      params.membrane_output == "finite elements",
+      params.write_particles,
+      params.write_grid,
+      partition ? partition->get_communicator() : MPI_COMM_SELF});
     if (!resumed && root)
       output->remove_previous_output();
     if (root)
       fs::remove(fs::path(dir) / "membrane_shape.csv");
+    // MPI: the directory exists and is cleared before any process writes
+    // its points there.
+    if (partition)
+      MPI_Barrier(partition->get_communicator());
     // Common columns (SPEC 6), the free-surface fraction where a body
     // detects free surfaces, then the scene's own columns.
     bool detecting = false;
@@ -774,56 +779,24 @@ namespace fsgmpm
     const bool any_output
       = (params.write_particles || params.write_grid || membrane)
         && output_schedule.active();
-    ParticleStore<dim> all_particles;
-    NodalFields<dim>   all_nodes;
-    auto               write_output = [&] {
-      if (!partition)
-        output->write(time, particles, *grid, nodes, membrane.get());
-      else
+    NodalFields<dim> all_nodes;
+    auto             write_output = [&] {
+      // MPI: every process writes its own points (their vorticity and
+      // projected pressure need the nodal values around them, exact at
+      // their owner); the grid's nodal mass and velocity (all that grid
+      // output reads) come to process 0, each node as the process that
+      // counts it has it.
+      if (partition && params.write_grid)
         {
-          DistributedPoints::gather_on_root(*partition,
-                                            particles,
-                                            all_particles);
-          // The vorticity and projected pressure need the nodal values
-          // around each point, exact only at its owner: computed there,
-          // sent with the point's id (as a double: exact below 2^53).
-          std::vector<double> local;
-          local.reserve(3 * particles.size());
-          for (unsigned int p = 0; p < particles.size(); ++p)
-            {
-              const auto fields = ParticleOutput<dim>::nodal_point_fields(
-                *grid, nodes, particles, p);
-              local.insert(local.end(),
-                           {double(particles.id[p]), fields[0], fields[1]});
-            }
-          const auto gathered
-            = Utilities::MPI::gather(partition->get_communicator(), local, 0);
-          // The grid's nodal mass and velocity (all that grid output
-          // reads), each node as the process that counts it has it.
-          if (params.write_grid)
-            {
-              all_nodes.mass = partition->counted_values(nodes.mass);
-              all_nodes.velocity = partition->counted_values(nodes.velocity);
-            }
-          if (root)
-            {
-              std::vector<unsigned int> index(particles.next_id, 0);
-              for (unsigned int p = 0; p < all_particles.size(); ++p)
-                index[all_particles.id[p]] = p;
-              std::vector<typename ParticleOutput<dim>::NodalPointFields>
-                fields(all_particles.size());
-              for (const auto &from : gathered)
-                for (unsigned int k = 0; k + 2 < from.size(); k += 3)
-                  fields[index[static_cast<unsigned int>(from[k])]]
-                    = {{from[k + 1], from[k + 2]}};
-              output->write(time,
-                            all_particles,
-                            *grid,
-                            params.write_grid ? all_nodes : nodes,
-                            membrane.get(),
-                            &fields);
-            }
+          all_nodes.mass = partition->counted_values(nodes.mass);
+          all_nodes.velocity = partition->counted_values(nodes.velocity);
         }
+      output->write(time,
+                    particles,
+                    *grid,
+                    nodes,
+                    membrane.get(),
+                    partition && params.write_grid ? &all_nodes : nullptr);
     };
     if (resumed)
       output->restore(resume_output);

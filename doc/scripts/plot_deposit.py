@@ -13,14 +13,13 @@ python3-numpy.
 """
 import argparse
 import csv
-import glob
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from read_vtu import read_vtu  # noqa: E402
+from read_vtu import particle_files, read_vtu  # noqa: E402
 
 
 def surface(path, bin_width):
@@ -57,7 +56,7 @@ def main():
     for run in args.runs:
         run_dir, _, label = run.partition(":")
         label = label or os.path.basename(run_dir.rstrip("/"))
-        files = sorted(glob.glob(os.path.join(run_dir, "particles_*.vtu")))
+        files = particle_files(run_dir)
         if not files:
             sys.exit("plot_deposit.py: no particles_*.vtu in " + run_dir)
         edges, heights = surface(files[-1], args.bin)

@@ -5,9 +5,13 @@ base64-encoded binary arrays) into numpy arrays, without VTK.
     fields = read_vtu("output/run/particles_00010.vtu")
     x, y = fields["Points"][:, 0], fields["Points"][:, 1]
 
+A .pvtu file (the points of an MPI run: one piece per process) is read
+as its pieces one after the other, as if they were one file.
+
 Uses Debian's /usr/bin/python3 with python3-numpy.
 """
 import base64
+import os
 import re
 import struct
 import zlib
@@ -37,12 +41,16 @@ def _decode(text, dtype):
 
 def read_vtu(path):
     """Map of array name ("Points" for the coordinates) to numpy array."""
+    if path.endswith(".pvtu"):
+        return _read_pvtu(path)
     with open(path) as f:
         text = f.read()
     fields = {}
     for match in re.finditer(r"<DataArray([^>]*)>\s*([^<]*)</DataArray>",
                              text):
         attributes, data = match.group(1), match.group(2).strip()
+        if not data:  # an empty piece (a process without points)
+            continue
         if 'format="binary"' not in attributes:
             raise ValueError(path + ": only binary VTU arrays are supported")
         name = re.search(r'Name="([^"]*)"', attributes)
@@ -54,3 +62,34 @@ def read_vtu(path):
         fields[name] = values.reshape(-1, components) if components > 1 \
             else values
     return fields
+
+
+def particle_files(directory):
+    """The points' file of every output step of a run, in order:
+    particles_NNNNN.vtu, or particles_NNNNN.pvtu of an MPI run (not its
+    pieces particles_NNNNN.R.vtu)."""
+    names = [n for n in os.listdir(directory)
+             if re.fullmatch(r"particles_\d+\.p?vtu", n)]
+    return [os.path.join(directory, n) for n in sorted(names)]
+
+
+def _read_pvtu(path):
+    """The pieces of a .pvtu record, concatenated in their order; the
+    cells' connectivity and offsets renumbered as in one file."""
+    with open(path) as f:
+        sources = re.findall(r'<Piece\s+Source="([^"]*)"', f.read())
+    directory = os.path.dirname(path)
+    pieces = [read_vtu(os.path.join(directory, s)) for s in sources]
+    fields, n_points, n_connectivity = {}, 0, 0
+    for piece in pieces:
+        if not piece:
+            continue
+        for name, values in piece.items():
+            if name == "connectivity":
+                values = values + n_points
+            elif name == "offsets":
+                values = values + n_connectivity
+            fields.setdefault(name, []).append(values)
+        n_points += len(piece["Points"])
+        n_connectivity += len(piece.get("connectivity", []))
+    return {name: np.concatenate(parts) for name, parts in fields.items()}

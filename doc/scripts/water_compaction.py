@@ -13,13 +13,12 @@ packed into the square than fits: the cloud has compacted although the
 points' volumes (and so the pressure) do not show it. Reference volume =
 mass / density, density given by --density (default 1000).
 """
-import glob
 import sys
 
 import numpy as np
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-from read_vtu import read_vtu  # noqa: E402
+from read_vtu import particle_files, read_vtu  # noqa: E402
 
 args = [a for a in sys.argv[1:] if not a.startswith("--density=")]
 density = 1000.
@@ -31,7 +30,7 @@ if not args:
 directory = args[0]
 h = float(args[1]) if len(args) > 1 else 0.08
 body = int(args[2]) if len(args) > 2 else 1
-files = sorted(glob.glob(directory + "/particles_*.vtu"))
+files = particle_files(directory)
 if not files:
     sys.exit("no particles_*.vtu in " + directory)
 print("file  interior_squares  ref_volume/H^2 (p10 p90)  volume/H^2")

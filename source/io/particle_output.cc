@@ -2,6 +2,7 @@
 #include <fsgmpm/io/particle_output.h>
 #include <fsgmpm/step/stages.h>
 
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -54,11 +55,9 @@ namespace fsgmpm
 
   template <int dim>
   void
-  ParticleOutput<dim>::build_patches(
-    const ParticleStore<dim>            &particles,
-    const BackgroundGrid<dim>           *grid,
-    const NodalFields<dim>              *nodes,
-    const std::vector<NodalPointFields> *nodal_fields)
+  ParticleOutput<dim>::build_patches(const ParticleStore<dim>  &particles,
+                                     const BackgroundGrid<dim> *grid,
+                                     const NodalFields<dim>    *nodes)
   {
     const unsigned int n_fields = dim + n_stress_components(dim) + 8;
     patches.resize(particles.size());
@@ -91,9 +90,7 @@ namespace fsgmpm
         for (unsigned int d = 0; d < dim; ++d)
           in_plane_trace += s[d][d];
         NodalPointFields fields = {{0., -in_plane_trace / dim}};
-        if (nodal_fields != nullptr)
-          fields = (*nodal_fields)[p];
-        else if (grid != nullptr && nodes != nullptr)
+        if (grid != nullptr && nodes != nullptr)
           fields = nodal_point_fields(*grid, *nodes, particles, p);
         patch.data(f++, 0) = fields[0];
         patch.data(f++, 0) = fields[1];
@@ -170,9 +167,11 @@ namespace fsgmpm
 
 
   PvdSeries::PvdSeries(const std::string &directory,
-                       const std::string &base_name)
+                       const std::string &base_name,
+                       const std::string &extension)
     : directory(directory)
     , base_name(base_name)
+    , extension(extension)
   {}
 
   std::string
@@ -180,9 +179,24 @@ namespace fsgmpm
   {
     std::ostringstream name;
     name << base_name << "_" << std::setw(5) << std::setfill('0')
-         << records.size() << ".vtu";
+         << records.size() << extension;
     records.emplace_back(time, name.str());
     return name.str();
+  }
+
+  void
+  PvdSeries::restore(const std::vector<double> &times)
+  {
+    records.clear();
+    for (const double t : times)
+      {
+        std::string       name  = next_file(t);
+        const std::string other = name.substr(0, name.rfind('.'))
+                                  + (extension == ".vtu" ? ".pvtu" : ".vtu");
+        if (!std::filesystem::exists(directory + "/" + name)
+            && std::filesystem::exists(directory + "/" + other))
+          records.back().second = other;
+      }
   }
 
   void

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/grid_output.h>
 #include <fsgmpm/io/membrane_fe_output.h>
@@ -11,10 +13,17 @@ namespace fsgmpm
   template <int dim>
   RunOutput<dim>::RunOutput(const Settings &settings)
     : settings(settings)
-    , particle_series(settings.directory, "particles")
+    // (A program started without an MPI launcher never initialises MPI.)
+    , parallel(Utilities::MPI::job_supports_mpi()
+               && Utilities::MPI::n_mpi_processes(settings.communicator) > 1)
+    , root(!parallel
+           || Utilities::MPI::this_mpi_process(settings.communicator) == 0)
+    , particle_series(settings.directory,
+                      "particles",
+                      parallel ? ".pvtu" : ".vtu")
     , grid_series(settings.directory, "grid")
     , membrane_series(settings.directory, "membrane")
-    , particle_xdmf(settings.directory, "particles")
+    , particle_xdmf(settings.directory, "particles", settings.communicator)
     , membrane_xdmf(settings.directory, "membrane")
   {}
 
@@ -26,7 +35,7 @@ namespace fsgmpm
   {
     namespace fs = std::filesystem;
     for (const auto &entry : fs::directory_iterator(settings.directory))
-      for (const char *stale : {".vtu", ".pvd", ".h5", ".xdmf"})
+      for (const char *stale : {".vtu", ".pvtu", ".pvd", ".h5", ".xdmf"})
         if (entry.path().extension() == stale)
           fs::remove(entry.path());
   }
@@ -35,20 +44,20 @@ namespace fsgmpm
 
   template <int dim>
   void
-  RunOutput<dim>::write(const double                         time,
-                        const ParticleStore<dim>            &particles,
-                        const BackgroundGrid<dim>           &grid,
-                        const NodalFields<dim>              &nodes,
-                        const Membrane<dim>                 *membrane,
-                        const std::vector<NodalPointFields> *nodal_fields)
+  RunOutput<dim>::write(const double               time,
+                        const ParticleStore<dim>  &particles,
+                        const BackgroundGrid<dim> &grid,
+                        const NodalFields<dim>    &nodes,
+                        const Membrane<dim>       *membrane,
+                        const NodalFields<dim>    *grid_nodes)
   {
     const std::string &dir = settings.directory;
     if (settings.write_particles)
       {
-        particle_output.build_patches(particles, &grid, &nodes, nodal_fields);
+        particle_output.build_patches(particles, &grid, &nodes);
         if (settings.hdf5)
           particle_output.write_xdmf(particle_xdmf, time);
-        else
+        else if (!parallel)
           {
             const std::string name = particle_series.next_file(time);
             write_file_atomically(dir + "/" + name, [&](std::ostream &out) {
@@ -56,7 +65,11 @@ namespace fsgmpm
             });
             particle_series.write_pvd();
           }
+        else
+          write_pieces(particle_series.next_file(time));
       }
+    if (!root)
+      return;
     if (membrane && settings.hdf5)
       write_membrane_xdmf(*membrane, membrane_xdmf, time);
     else if (membrane)
@@ -71,9 +84,58 @@ namespace fsgmpm
     if (settings.write_grid)
       {
         const std::string name = grid_series.next_file(time);
-        write_grid_vtu(grid, nodes, dir + "/" + name);
+        write_grid_vtu(grid,
+                       grid_nodes != nullptr ? *grid_nodes : nodes,
+                       dir + "/" + name);
         grid_series.write_pvd();
       }
+  }
+
+
+
+  template <int dim>
+  void
+  RunOutput<dim>::write_pieces(const std::string &record)
+  {
+    // BASE_NNNNN.pvtu names the pieces BASE_NNNNN.R.vtu, one per process.
+    const std::string  stem = record.substr(0, record.size() - 5);
+    const unsigned int n
+      = Utilities::MPI::n_mpi_processes(settings.communicator);
+    const unsigned int rank
+      = Utilities::MPI::this_mpi_process(settings.communicator);
+    std::vector<std::string> pieces;
+    for (unsigned int r = 0; r < n; ++r)
+      pieces.push_back(stem + "." + std::to_string(r) + ".vtu");
+    // A failure on one process is everyone's (no process may wait for
+    // pieces that never come), and the record is written once every piece
+    // is complete.
+    std::string error;
+    try
+      {
+        write_file_atomically(settings.directory + "/" + pieces[rank],
+                              [&](std::ostream &out) {
+                                particle_output.write_vtu(out);
+                              });
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    const bool ok
+      = Utilities::MPI::min(int(error.empty()), settings.communicator) == 1;
+    AssertThrow(ok,
+                ExcMessage(error.empty()
+                             ? "Writing <" + settings.directory + "/" + record
+                                 + ">: another process failed to write its "
+                                   "piece (see its message)."
+                             : error));
+    if (!root)
+      return;
+    write_file_atomically(settings.directory + "/" + record,
+                          [&](std::ostream &out) {
+                            particle_output.write_pvtu_record(out, pieces);
+                          });
+    particle_series.write_pvd();
   }
 
 
@@ -96,9 +158,8 @@ namespace fsgmpm
     PvdSeries *series[3] = {&particle_series, &grid_series, &membrane_series};
     for (unsigned int k = 0; k < 3; ++k)
       {
-        for (const double t : state.series_times[k])
-          series[k]->next_file(t);
-        if (!state.series_times[k].empty())
+        series[k]->restore(state.series_times[k]);
+        if (!state.series_times[k].empty() && root)
           series[k]->write_pvd();
       }
     particle_xdmf.restore(state.xdmf_records[0]);

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/hdf5.h>
+#include <deal.II/base/mpi.h>
 
 #include <fsgmpm/io/hdf5_setup.h>
 
@@ -35,23 +36,39 @@ namespace fsgmpm
       return name.str();
     }
 
-    /// A dataset of @p rows x @p columns values; false if HDF5 failed
-    /// (deal.II's wrappers do not throw then; HDF5's error stack tells).
+    /// A dataset of @p total_rows x @p columns values, of which @p values
+    /// are the rows from @p offset on; false if HDF5 failed (deal.II's
+    /// wrappers do not throw then; HDF5's error stack tells). In a file
+    /// opened on several processes this is collective: every process
+    /// writes its rows (or none) in one parallel write.
     template <typename Number>
     bool
     write_table(HDF5::File                &file,
                 const std::string         &name,
                 const std::vector<Number> &values,
-                const unsigned int         columns)
+                const unsigned int         columns,
+                const bool                 parallel,
+                const hsize_t              offset,
+                const hsize_t              total_rows)
     {
       const hsize_t rows = values.size() / columns;
       try
         {
           auto dataset = file.create_dataset<Number>(
             name,
-            columns == 1 ? std::vector<hsize_t>{rows}
-                         : std::vector<hsize_t>{rows, hsize_t(columns)});
-          dataset.write(values);
+            columns == 1 ? std::vector<hsize_t>{total_rows}
+                         : std::vector<hsize_t>{total_rows, hsize_t(columns)});
+          if (!parallel)
+            dataset.write(values);
+          else if (rows > 0)
+            dataset.write_hyperslab(
+              values,
+              columns == 1 ? std::vector<hsize_t>{offset}
+                           : std::vector<hsize_t>{offset, 0},
+              columns == 1 ? std::vector<hsize_t>{rows}
+                           : std::vector<hsize_t>{rows, hsize_t(columns)});
+          else
+            dataset.template write_none<Number>();
         }
       catch (...)
         {
@@ -64,9 +81,11 @@ namespace fsgmpm
 
 
   XdmfSeries::XdmfSeries(const std::string &directory,
-                         const std::string &base_name)
+                         const std::string &base_name,
+                         const MPI_Comm     communicator)
     : directory(directory)
     , base_name(base_name)
+    , communicator(communicator)
   {}
 
 
@@ -78,13 +97,35 @@ namespace fsgmpm
                     const std::vector<unsigned int> &connectivity,
                     const std::vector<Field>        &fields)
   {
-    const unsigned int        n_nodes = positions.size() / 3;
-    std::vector<unsigned int> cells   = connectivity;
+    // (A program started without an MPI launcher never initialises MPI.)
+    const bool parallel = Utilities::MPI::job_supports_mpi()
+                          && Utilities::MPI::n_mpi_processes(communicator) > 1;
+    const bool root
+      = !parallel || Utilities::MPI::this_mpi_process(communicator) == 0;
+    AssertThrow(!parallel || (type == CellType::vertex && connectivity.empty()),
+                ExcMessage("Only points are written by several processes "
+                           "into one HDF5 file (the membrane and the grid are "
+                           "written by process 0)."));
+    // This process's vertices are rows [offset, offset + n) of the file's.
+    const unsigned long long n_local = positions.size() / 3;
+    unsigned long long       offset = 0, total = n_local;
+    if (parallel)
+      {
+        MPI_Exscan(
+          &n_local, &offset, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, communicator);
+        if (root)
+          offset = 0; // MPI_Exscan leaves process 0's result undefined
+        total = Utilities::MPI::sum(n_local, communicator);
+      }
+    std::vector<unsigned int> cells = connectivity;
     if (type == CellType::vertex && cells.empty())
-      for (unsigned int i = 0; i < n_nodes; ++i)
-        cells.push_back(i);
-    const unsigned int n_cells = cells.size() / nodes_per_cell(type);
-    // HDF5 datasets cannot be empty: a step without nodes is not written.
+      for (unsigned long long i = 0; i < n_local; ++i)
+        cells.push_back(offset + i);
+    const unsigned int n_nodes = total;
+    const unsigned int n_cells
+      = parallel ? n_nodes : cells.size() / nodes_per_cell(type);
+    // HDF5 datasets cannot be empty: a step without nodes is not written
+    // (the same decision on every process: the totals are global).
     if (n_nodes == 0 || n_cells == 0)
       return;
 
@@ -94,25 +135,52 @@ namespace fsgmpm
     prepare_hdf5();
     for (const auto &f : fields)
       AssertThrow(f.values.size()
-                    == f.n_components * (f.on_cells ? n_cells : n_nodes),
+                    == f.n_components
+                         * (f.on_cells ? cells.size() / nodes_per_cell(type)
+                                       : n_local),
                   ExcInternalError());
     {
       // An HDF5::File destroyed while an exception is in flight aborts the
       // program: write, close, then report.
       auto file
-        = std::make_unique<HDF5::File>(tmp, HDF5::File::FileAccessMode::create);
-      bool ok = write_table(*file, "nodes", positions, 3)
-                && write_table(*file, "cells", cells, nodes_per_cell(type));
+        = parallel
+            ? std::make_unique<HDF5::File>(tmp,
+                                           HDF5::File::FileAccessMode::create,
+                                           communicator)
+            : std::make_unique<HDF5::File>(tmp,
+                                           HDF5::File::FileAccessMode::create);
+      bool ok
+        = write_table(*file, "nodes", positions, 3, parallel, offset, total)
+          && write_table(*file,
+                         "cells",
+                         cells,
+                         nodes_per_cell(type),
+                         parallel,
+                         offset,
+                         n_cells);
       for (const auto &f : fields)
-        ok = ok && write_table(*file, f.name, f.values, f.n_components);
+        ok = ok
+             && write_table(*file,
+                            f.name,
+                            f.values,
+                            f.n_components,
+                            parallel,
+                            offset,
+                            f.on_cells ? n_cells : n_nodes);
       file.reset();
-      if (!ok)
+      if (parallel)
+        ok = Utilities::MPI::min(int(ok), communicator) == 1;
+      if (!ok && root)
         std::remove(tmp.c_str());
       AssertThrow(ok,
                   ExcMessage("Writing <" + path
                              + "> failed (is the disk full?)."));
     }
-    AssertThrow(std::rename(tmp.c_str(), path.c_str()) == 0,
+    // Every process has closed the file before process 0 renames it.
+    bool renamed = !root || std::rename(tmp.c_str(), path.c_str()) == 0;
+    if (parallel)
+      renamed = Utilities::MPI::min(int(renamed), communicator) == 1;
+    AssertThrow(renamed,
                 ExcMessage("Cannot rename <" + tmp + "> to <" + path + ">."));
 
     steps.push_back({time, n_nodes, n_cells});
@@ -120,7 +188,8 @@ namespace fsgmpm
     layout.clear();
     for (const auto &f : fields)
       layout.push_back({f.name, f.n_components, f.on_cells, {}});
-    write_xdmf();
+    if (root)
+      write_xdmf();
   }
 
 

@@ -29,15 +29,13 @@ namespace fsgmpm
     using NodalPointFields = std::array<double, 2>;
 
     /// Build the patches from the current state of @p particles; with
-    /// @p grid and @p nodes also nodal_point_fields() of each point, zero
-    /// vorticity and the point's own pressure without. With
-    /// @p nodal_fields (one per point, computed where the nodal values are
-    /// exact: MPI), those are written instead.
+    /// @p grid and @p nodes also nodal_point_fields() of each point (MPI:
+    /// the nodal values are exact around the points a process owns), zero
+    /// vorticity and the point's own pressure without.
     void
-    build_patches(const ParticleStore<dim>            &particles,
-                  const BackgroundGrid<dim>           *grid         = nullptr,
-                  const NodalFields<dim>              *nodes        = nullptr,
-                  const std::vector<NodalPointFields> *nodal_fields = nullptr);
+    build_patches(const ParticleStore<dim>  &particles,
+                  const BackgroundGrid<dim> *grid  = nullptr,
+                  const NodalFields<dim>    *nodes = nullptr);
 
     /// Point @p p's vorticity omega_z = dv_y/dx - dv_x/dy of the nodal
     /// velocity field in its cell (constant on a linear simplex; paper
@@ -85,11 +83,21 @@ namespace fsgmpm
   class PvdSeries
   {
   public:
-    PvdSeries(const std::string &directory, const std::string &base_name);
+    /// Files BASE_NNNNN@p extension (".vtu", or ".pvtu": the record of one
+    /// piece per MPI process).
+    PvdSeries(const std::string &directory,
+              const std::string &base_name,
+              const std::string &extension = ".vtu");
 
     /// File name (without directory) for the next output and records it.
     std::string
     next_file(const double time);
+
+    /// Continue a series from times(): the files written before a
+    /// checkpoint, each under the extension it has on disk (a serial run's
+    /// .vtu files continued by several processes, or the other way round).
+    void
+    restore(const std::vector<double> &times);
 
     /// Rewrite the .pvd file.
     void
@@ -107,7 +115,7 @@ namespace fsgmpm
     }
 
   private:
-    std::string                                 directory, base_name;
+    std::string                                 directory, base_name, extension;
     std::vector<std::pair<double, std::string>> records;
   };
 } // namespace fsgmpm

@@ -1,6 +1,8 @@
 #ifndef fsgmpm_io_run_output_h
 #define fsgmpm_io_run_output_h
 
+#include <deal.II/base/mpi.h>
+
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/io/particle_output.h>
@@ -27,8 +29,6 @@ namespace fsgmpm
   class RunOutput
   {
   public:
-    using NodalPointFields = typename ParticleOutput<dim>::NodalPointFields;
-
     struct Settings
     {
       std::string directory;
@@ -39,6 +39,11 @@ namespace fsgmpm
       bool membrane_finite_elements = false;
       bool write_particles          = true;
       bool write_grid               = false;
+      /// MPI: the processes that write the points together, each its own
+      /// (one HDF5 file per step through MPI-IO, or a PVTU record of one
+      /// VTU piece per process); process 0 writes the membrane, the grid
+      /// and the collections.
+      MPI_Comm communicator = MPI_COMM_SELF;
     };
 
     /// The series written so far, for a checkpoint: the times of the
@@ -57,17 +62,19 @@ namespace fsgmpm
     void
     remove_previous_output() const;
 
-    /// Write the state at @p time (@p membrane may be null). With
-    /// @p nodal_fields (MPI: gathered from the processes that own the
-    /// points) the points' vorticity and projected pressure are taken from
-    /// it, not from @p nodes.
+    /// Write the state at @p time (@p membrane may be null). Collective
+    /// over Settings::communicator: every process passes the points it
+    /// owns and @p nodes exact around them (for the points' vorticity and
+    /// projected pressure); process 0 writes its @p membrane and the grid
+    /// with @p grid_nodes if given (MPI: every node's mass and velocity as
+    /// the process that counts it has them), else with @p nodes.
     void
-    write(const double                         time,
-          const ParticleStore<dim>            &particles,
-          const BackgroundGrid<dim>           &grid,
-          const NodalFields<dim>              &nodes,
-          const Membrane<dim>                 *membrane,
-          const std::vector<NodalPointFields> *nodal_fields = nullptr);
+    write(const double               time,
+          const ParticleStore<dim>  &particles,
+          const BackgroundGrid<dim> &grid,
+          const NodalFields<dim>    &nodes,
+          const Membrane<dim>       *membrane,
+          const NodalFields<dim>    *grid_nodes = nullptr);
 
     State
     state() const;
@@ -78,7 +85,13 @@ namespace fsgmpm
     restore(const State &state);
 
   private:
+    /// MPI, VTU: this process's points as its piece of the PVTU file
+    /// @p record (collective); process 0 writes the record.
+    void
+    write_pieces(const std::string &record);
+
     Settings            settings;
+    bool                parallel, root;
     ParticleOutput<dim> particle_output;
     PvdSeries           particle_series, grid_series, membrane_series;
     XdmfSeries          particle_xdmf, membrane_xdmf;

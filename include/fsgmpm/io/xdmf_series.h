@@ -1,6 +1,8 @@
 #ifndef fsgmpm_io_xdmf_series_h
 #define fsgmpm_io_xdmf_series_h
 
+#include <deal.II/base/mpi.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -38,7 +40,13 @@ namespace fsgmpm
       std::vector<double> values;
     };
 
-    XdmfSeries(const std::string &directory, const std::string &base_name);
+    /// With a @p communicator of several processes, write() is collective:
+    /// every process passes its own vertices (the points it owns), and one
+    /// file per step holds them all, rank after rank, written through
+    /// MPI-IO (parallel HDF5); process 0 writes BASE.xdmf.
+    XdmfSeries(const std::string &directory,
+               const std::string &base_name,
+               const MPI_Comm     communicator = MPI_COMM_SELF);
 
     /// Write the step at @p time: @p positions n x 3 (node after node),
     /// @p connectivity (nodes_per_cell numbers per cell; empty for
@@ -64,6 +72,7 @@ namespace fsgmpm
     write_xdmf() const;
 
     std::string directory, base_name;
+    MPI_Comm    communicator;
     struct Record
     {
       double       time;
