@@ -1,4 +1,5 @@
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/utilities.h>
 
 #include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/mesh_generation.h>
@@ -899,8 +900,19 @@ namespace fsgmpm
   {
     const unsigned int n_points = n_global_particles();
     double             bytes    = particles.bytes_per_particle();
+    // What the processes really hold at their peak (the point store, the
+    // grid and its deal.II mesh, the libraries): VmHWM.
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    double peak_resident = 1024. * memory.VmHWM, total_resident = peak_resident;
     if (partition)
-      bytes = Utilities::MPI::max(bytes, partition->get_communicator());
+      {
+        bytes = Utilities::MPI::max(bytes, partition->get_communicator());
+        peak_resident
+          = Utilities::MPI::max(peak_resident, partition->get_communicator());
+        total_resident
+          = Utilities::MPI::sum(total_resident, partition->get_communicator());
+      }
     if (!root)
       return;
     std::string               stages  = "{";
@@ -928,6 +940,9 @@ namespace fsgmpm
          {"termination", json_string(to_string(termination))},
          {"diagnosis", json_string(diagnosis)},
          {"bytes_per_particle", json_number(bytes)},
+         {"peak_resident_bytes", json_number(peak_resident)},
+         {"resident_bytes_per_particle",
+          json_number(n_points > 0 ? total_resident / n_points : 0.)},
          {"checkpoint_seconds", json_number(checkpoint_seconds)},
          {"version", json_string(FSGMPM_VERSION)}};
     write_json(params.output_directory + "/summary.json", entries);
@@ -939,13 +954,8 @@ namespace fsgmpm
   {
     if (particles.size() == 0)
       return 0;
-    const double per_cell
-      = sizeof(unsigned int) * 2 * (dim + 1)
-        + sizeof(double) * (dim + dim * dim + dim * (dim + 1) + 2)
-        + sizeof(types::boundary_id) * (dim + 1) + sizeof(unsigned int) * 2;
-    const double per_node
-      = sizeof(double) * (1 + 5 * dim + dim) + 2 * sizeof(unsigned int);
-    return (per_cell * grid->n_cells() + per_node * grid->n_nodes())
+    return double(grid->memory_consumption() + nodes.memory_consumption()
+                  + smoothing.memory_consumption())
            / particles.size();
   }
 

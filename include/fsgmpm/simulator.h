@@ -184,7 +184,9 @@ namespace fsgmpm
       return params;
     }
 
-    /// Memory of the grid and nodal data divided by the number of points.
+    /// Bytes of the grid (its arrays, deal.II mesh and DoF handler), the
+    /// nodal fields and the smoothing fields, divided by the number of
+    /// points (the points' own: ParticleStore::bytes_per_particle()).
     double
     get_grid_memory_per_particle() const;
 

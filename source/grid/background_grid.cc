@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/memory_consumption.h>
 
 #include <fsgmpm/grid/background_grid.h>
 
@@ -34,8 +35,6 @@ namespace fsgmpm
   {
     const unsigned int n = triangulation.n_active_cells();
     cell_nodes.resize(n);
-    cell_origin.resize(n);
-    inverse_edge_matrix.resize(n);
     shape_gradients.resize(n);
     cell_volume.resize(n);
     cell_min_altitude.resize(n);
@@ -90,14 +89,12 @@ namespace fsgmpm
                                + " is degenerate (zero volume)."));
         const Tensor<2, dim> inv = invert(edges);
 
-        cell_origin[c] = x0;
         cell_volume[c] = std::abs(det) / factorial;
         for (const unsigned int node : cell_nodes[c])
           node_volume[node] += cell_volume[c] / n_vertices;
         Tensor<1, dim> grad0;
         for (unsigned int k = 0; k < dim; ++k)
           {
-            inverse_edge_matrix[c][k] = inv[k];
             shape_gradients[c][k + 1] = inv[k];
             grad0 -= inv[k];
           }
@@ -260,8 +257,6 @@ namespace fsgmpm
     };
     replicate(node_positions);
     replicate(node_volume);
-    replicate(cell_origin);
-    replicate(inverse_edge_matrix);
     replicate(shape_gradients);
     replicate(cell_volume);
     replicate(cell_min_altitude);
@@ -284,6 +279,26 @@ namespace fsgmpm
     for (unsigned int f = 1; f < n; ++f)
       for (unsigned int b = f * nb; b < (f + 1) * nb; ++b)
         block_colour[b] += f * nk;
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  BackgroundGrid<dim>::memory_consumption() const
+  {
+    return MemoryConsumption::memory_consumption(node_positions)
+           + MemoryConsumption::memory_consumption(node_volume)
+           + MemoryConsumption::memory_consumption(cell_nodes)
+           + MemoryConsumption::memory_consumption(shape_gradients)
+           + MemoryConsumption::memory_consumption(cell_volume)
+           + MemoryConsumption::memory_consumption(cell_min_altitude)
+           + MemoryConsumption::memory_consumption(cell_neighbors)
+           + MemoryConsumption::memory_consumption(face_boundary_id)
+           + MemoryConsumption::memory_consumption(cell_block)
+           + MemoryConsumption::memory_consumption(block_colour)
+           + triangulation.memory_consumption()
+           + dof_handler.memory_consumption();
   }
 
 

@@ -15,6 +15,8 @@ namespace fsgmpm
     {
       if (grid.n_velocity_fields() == 1)
         return;
+      nodes.use(nodes.contact_normal);
+      nodes.use(nodes.contact_volume);
       for (const unsigned int i : nodes.active_nodes)
         {
           nodes.contact_normal[grid.base_node(i)] = Tensor<1, dim>();

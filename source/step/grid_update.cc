@@ -50,6 +50,8 @@ namespace fsgmpm
         }
       // The energy increments and the Eq. (30) force norms.
       const double light = 1e-4 * mean_mass;
+      // Mass scaling's fictitious inertia (sized only when it is used).
+      const bool scaled = !nodes.added_mass.empty();
       // Nodes with (almost) no mass carry no information; the remap of
       // Eq. (20) gives them a velocity consistent with their particles.
       for (const unsigned int i : nodes.active_nodes)
@@ -75,13 +77,13 @@ namespace fsgmpm
                              * (v_old[d] > 0 ? 1. : -1.);
 
           // Mass scaling: the fictitious inertia is directional.
-          const SymmetricTensor<2, dim> &added = nodes.added_mass[i];
-          Tensor<1, dim>                 v_new = v_old;
-          if (added.norm() == 0)
+          Tensor<1, dim> v_new = v_old;
+          if (!scaled || nodes.added_mass[i].norm() == 0)
             v_new += (dt / m) * (unbalanced + damping);
           else
             v_new += dt
-                     * (invert(m * unit_symmetric_tensor<dim>() + added)
+                     * (invert(m * unit_symmetric_tensor<dim>()
+                               + nodes.added_mass[i])
                         * (unbalanced + damping));
           constraints.apply(i, v_new);
           nodes.velocity[i]     = v_new;

@@ -60,6 +60,8 @@ namespace fsgmpm
     NodalFields<dim>                &nodes,
     const double                     dt_floor)
   {
+    if (dt_floor > 0)
+      nodes.use(nodes.added_mass);
     // Block Gershgorin bound on the membrane stiffness projected to the
     // grid: element blocks k [A -A; -A A] <= 2 k diag(A, A) and convex
     // transfer weights give K <= diag_i(D_i) with the directional
@@ -138,8 +140,9 @@ namespace fsgmpm
         const SymmetricTensor<2, dim> D
           = touched_stiffness[t]
             + touched_points[t] * unit_symmetric_tensor<dim>();
-        nodes.added_mass[i] = SymmetricTensor<2, dim>();
-        const double m      = nodes.mass[i];
+        if (!nodes.added_mass.empty())
+          nodes.added_mass[i] = SymmetricTensor<2, dim>();
+        const double m = nodes.mass[i];
         if (m <= 0)
           continue;
         for (const auto &[k, e] : eigenvectors(D))

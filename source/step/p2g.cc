@@ -15,6 +15,11 @@ namespace fsgmpm
     {
       const bool project = (integration == StressIntegration::nodal_projection);
       nodes.reset_active();
+      if (project)
+        {
+          nodes.use(nodes.volume_stress);
+          nodes.use(nodes.support_volume);
+        }
       for (const unsigned int c : particles.occupied_cells)
         nodes.activate(grid.cell_nodes[c]);
 

@@ -10,8 +10,14 @@
 //
 // Prints one line per case:
 //   BENCH <case> dim=<d> particles=<n> steps=<s> updates_per_second=<x>
-//         bytes_per_particle=<b> baseline_updates_per_second=<y>
+//         bytes_per_particle=<b> resident_bytes_per_particle=<r>
+//         baseline_updates_per_second=<y>
 // and the time per step of each stage. Not a test with a timed assertion.
+// bytes_per_particle counts the point store and the grid's arrays per
+// point; resident_bytes_per_particle is what the process holds more at the
+// end of the case than before it (VmRSS), per point: also the deal.II mesh
+// and DoF handler, the nodal and smoothing fields and the allocator's
+// slack.
 //
 // The membrane (issue 17): the geotube cases time the membrane's share of
 // the step (stage "membrane"), slip at degree 1 as shipped and no-slip at
@@ -25,6 +31,7 @@
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
@@ -35,6 +42,8 @@
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/membrane/membrane_mechanics.h>
 #include <fsgmpm/simulator.h>
+
+#include <malloc.h>
 
 #include <chrono>
 #include <fstream>
@@ -468,7 +477,15 @@ end
   {
     if (name.find(case_filter) == std::string::npos)
       return 0.;
-    auto               prm = test_tools::make_parameters(prm_text);
+    // The memory the case holds: resident before it and at its end (the
+    // grid and its deal.II mesh included). The memory of earlier cases is
+    // given back to the system first (glibc keeps freed blocks otherwise,
+    // and this case would reuse them unseen).
+    malloc_trim(0);
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double       resident_before = 1024. * memory.VmRSS;
+    auto               prm             = test_tools::make_parameters(prm_text);
     Simulator<dim>     sim(*prm);
     const unsigned int n = sim.get_particles().size();
     // One warm-up step, then the timed steps.
@@ -481,6 +498,8 @@ end
     const double ups  = double(n) * steps / wall;
     const double bpp  = sim.get_particles().bytes_per_particle()
                        + sim.get_grid_memory_per_particle();
+    Utilities::System::get_memory_stats(memory);
+    const double resident = (1024. * memory.VmRSS - resident_before) / n;
     const double baseline
       = known_baseline > 0
           ? known_baseline
@@ -489,6 +508,7 @@ end
               << " steps=" << steps
               << " updates_per_second=" << std::setprecision(4) << ups
               << " bytes_per_particle=" << std::setprecision(4) << bpp
+              << " resident_bytes_per_particle=" << resident
               << " baseline_updates_per_second=" << baseline
               << " speedup=" << ups / baseline
               << " threads=" << MultithreadInfo::n_threads() << std::endl;

@@ -23,10 +23,11 @@ namespace fsgmpm
    *
    * For linear simplices the shape function of local vertex k at a point x is
    * its barycentric coordinate lambda_k(x) and its gradient is constant over
-   * the cell. We therefore precompute for every cell the exact inverse of the
-   * affine map (lambda_1..lambda_dim = A (x - x_0), lambda_0 = 1 - sum) and the
-   * dim+1 gradients once; point location and all particle-grid transfers then
-   * use only these arrays, never a mapping's Newton iteration. Negatively
+   * the cell. We therefore precompute for every cell the dim+1 gradients
+   * once: those of vertices 1..dim are the rows of the exact inverse A of the
+   * affine map (lambda_1..lambda_dim = A (x - x_0), lambda_0 = 1 - sum), so
+   * point location and all particle-grid transfers use only these gradients
+   * and the node positions, never a mapping's Newton iteration. Negatively
    * oriented cells (Gmsh tets) need no special care: A is the inverse of the
    * cell's edge matrix whatever the sign of its determinant.
    *
@@ -116,12 +117,14 @@ namespace fsgmpm
     std::array<double, dim + 1>
     barycentric(const unsigned int c, const Point<dim> &x) const
     {
+      // lambda_{k} = grad lambda_k . (x - x_0) for k >= 1 (lambda_k(x_0) =
+      // 0): the gradients are the rows of the inverse edge matrix.
       std::array<double, dim + 1> lambda;
-      const Tensor<1, dim>        d   = x - cell_origin[c];
+      const Tensor<1, dim>        d   = x - node_positions[cell_nodes[c][0]];
       double                      sum = 0;
       for (unsigned int k = 0; k < dim; ++k)
         {
-          lambda[k + 1] = inverse_edge_matrix[c][k] * d;
+          lambda[k + 1] = shape_gradients[c][k + 1] * d;
           sum += lambda[k + 1];
         }
       lambda[0] = 1. - sum;
@@ -156,6 +159,11 @@ namespace fsgmpm
       return dof_handler;
     }
 
+    /// Bytes held by the per-cell and per-node arrays and by the deal.II
+    /// mesh and DoF handler behind them.
+    std::size_t
+    memory_consumption() const;
+
     /// Smallest and largest cell altitude (for time step and checks).
     double min_altitude_global;
     double max_altitude_global;
@@ -171,10 +179,9 @@ namespace fsgmpm
 
     // ---- per-cell data (index = active cell index) ---------------------
     std::vector<std::array<unsigned int, dim + 1>> cell_nodes;
-    std::vector<Point<dim>>                        cell_origin;
-    /// Rows of the inverse edge matrix: lambda_{k+1} = row_k . (x - x_0).
-    std::vector<std::array<Tensor<1, dim>, dim>> inverse_edge_matrix;
-    /// Gradients of the dim+1 shape functions (constant per cell).
+    /// Gradients of the dim+1 shape functions (constant per cell); those
+    /// of k = 1..dim are the rows of the inverse of the edge matrix
+    /// (x_k - x_0), so lambda_k = grad lambda_k . (x - x_0).
     std::vector<std::array<Tensor<1, dim>, dim + 1>> shape_gradients;
     std::vector<double>                              cell_volume;
     /// Smallest altitude of the cell: min_k 1/|grad lambda_k|.

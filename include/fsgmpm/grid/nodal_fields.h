@@ -1,6 +1,7 @@
 #ifndef fsgmpm_grid_nodal_fields_h
 #define fsgmpm_grid_nodal_fields_h
 
+#include <deal.II/base/memory_consumption.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -27,11 +28,13 @@ namespace fsgmpm
       external_force.assign(n_nodes, Tensor<1, dim>());
       velocity.assign(n_nodes, Tensor<1, dim>());
       acceleration.assign(n_nodes, Tensor<1, dim>());
-      added_mass.assign(n_nodes, SymmetricTensor<2, dim>());
-      contact_normal.assign(n_nodes, Tensor<1, dim>());
-      contact_volume.assign(n_nodes, 0.);
-      volume_stress.assign(n_nodes, Tensor<2, dim>());
-      support_volume.assign(n_nodes, 0.);
+      // The fields of one option each are sized when it first writes them
+      // (use()): most scenes need none of them.
+      release(added_mass);
+      release(contact_normal);
+      release(contact_volume);
+      release(volume_stress);
+      release(support_volume);
       active_stamp.assign(n_nodes, 0u);
       active_nodes.clear();
       stamp = 0;
@@ -49,12 +52,48 @@ namespace fsgmpm
           external_force[i] = Tensor<1, dim>();
           velocity[i]       = Tensor<1, dim>();
           acceleration[i]   = Tensor<1, dim>();
-          added_mass[i]     = SymmetricTensor<2, dim>();
-          volume_stress[i]  = Tensor<2, dim>();
-          support_volume[i] = 0.;
         }
+      if (!added_mass.empty())
+        for (const unsigned int i : active_nodes)
+          added_mass[i] = SymmetricTensor<2, dim>();
+      if (!volume_stress.empty())
+        for (const unsigned int i : active_nodes)
+          {
+            volume_stress[i]  = Tensor<2, dim>();
+            support_volume[i] = 0.;
+          }
       active_nodes.clear();
       ++stamp;
+    }
+
+    /// Size an optional field (added_mass, contact_normal and
+    /// contact_volume, volume_stress and support_volume: empty until their
+    /// option first writes them), zero, if it is not sized yet.
+    template <typename T>
+    void
+    use(std::vector<T> &field) const
+    {
+      if (field.size() != mass.size())
+        field.assign(mass.size(), T());
+    }
+
+    /// Bytes held by the nodal arrays (their capacities).
+    std::size_t
+    memory_consumption() const
+    {
+      return MemoryConsumption::memory_consumption(mass)
+             + MemoryConsumption::memory_consumption(momentum)
+             + MemoryConsumption::memory_consumption(internal_force)
+             + MemoryConsumption::memory_consumption(external_force)
+             + MemoryConsumption::memory_consumption(velocity)
+             + MemoryConsumption::memory_consumption(acceleration)
+             + MemoryConsumption::memory_consumption(added_mass)
+             + MemoryConsumption::memory_consumption(contact_normal)
+             + MemoryConsumption::memory_consumption(contact_volume)
+             + MemoryConsumption::memory_consumption(volume_stress)
+             + MemoryConsumption::memory_consumption(support_volume)
+             + MemoryConsumption::memory_consumption(active_nodes)
+             + MemoryConsumption::memory_consumption(active_stamp);
     }
 
     /// Mark the nodes of one occupied cell active (call after reset_active).
@@ -81,12 +120,14 @@ namespace fsgmpm
     std::vector<Tensor<1, dim>> velocity;
     /// Constrained nodal acceleration a^n of Eq. (18).
     std::vector<Tensor<1, dim>> acceleration;
-    /// Fictitious inertia of dynamic relaxation (mass scaling), a tensor so
+    /// Fictitious inertia of dynamic relaxation (mass scaling; empty
+    /// without), a tensor so
     /// that it acts only in the directions in which a stiff membrane needs
     /// it (along the cables): a = (m I + added_mass)^-1 F. It slows the
     /// node's acceleration but carries no weight and no momentum.
     std::vector<SymmetricTensor<2, dim>> added_mass;
-    /// Multi-field contact: at a node of field 0, the unnormalised normal
+    /// Multi-field contact (empty with one velocity field): at a node of
+    /// field 0, the unnormalised normal
     /// from field 0 towards field 1 (grad m_1 - grad m_0), set by
     /// Stages::contact_normals.
     std::vector<Tensor<1, dim>> contact_normal;
@@ -94,8 +135,8 @@ namespace fsgmpm
     /// the points of all fields (the volume the materials fill there).
     std::vector<double> contact_volume;
 
-    /// Nodal stress projection (Stress integration = nodal projection):
-    /// sum_p N_i(x_p) V_p sigma_p, the in-plane part.
+    /// Nodal stress projection (Stress integration = nodal projection;
+    /// empty without): sum_p N_i(x_p) V_p sigma_p, the in-plane part.
     std::vector<Tensor<2, dim>> volume_stress;
     /// Nodal stress projection: sum over the occupied cells c around node i
     /// of V_c / (dim + 1), the node's lumped share of the occupied volume.
@@ -104,6 +145,14 @@ namespace fsgmpm
     std::vector<unsigned int> active_nodes;
     std::vector<unsigned int> active_stamp;
     unsigned int              stamp = 0;
+
+  private:
+    template <typename T>
+    static void
+    release(std::vector<T> &field)
+    {
+      std::vector<T>().swap(field);
+    }
   };
 } // namespace fsgmpm
 

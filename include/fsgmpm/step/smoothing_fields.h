@@ -1,6 +1,7 @@
 #ifndef fsgmpm_step_smoothing_fields_h
 #define fsgmpm_step_smoothing_fields_h
 
+#include <deal.II/base/memory_consumption.h>
 #include <deal.II/base/tensor.h>
 
 #include <vector>
@@ -49,6 +50,19 @@ namespace fsgmpm
     average(const unsigned int m, const unsigned int i) const
     {
       return denominator[m][i] > 0 ? numerator[m][i] / denominator[m][i] : 0.;
+    }
+
+    /// Bytes held by the arrays (their capacities).
+    std::size_t
+    memory_consumption() const
+    {
+      return MemoryConsumption::memory_consumption(numerator)
+             + MemoryConsumption::memory_consumption(denominator)
+             + MemoryConsumption::memory_consumption(volume_fraction)
+             + MemoryConsumption::memory_consumption(lumped_volume)
+             + MemoryConsumption::memory_consumption(cell_counted)
+             + MemoryConsumption::memory_consumption(velocity_gradient)
+             + MemoryConsumption::memory_consumption(nodal_velocity_gradient);
     }
 
     std::vector<std::vector<double>> numerator, denominator;
