@@ -6,6 +6,7 @@
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/run_output.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace fsgmpm
@@ -66,7 +67,7 @@ namespace fsgmpm
             particle_series.write_pvd();
           }
         else
-          write_pieces(particle_series.next_file(time));
+          write_pieces(particle_series.next_file(time), particles.size());
       }
     if (!root)
       return;
@@ -95,27 +96,36 @@ namespace fsgmpm
 
   template <int dim>
   void
-  RunOutput<dim>::write_pieces(const std::string &record)
+  RunOutput<dim>::write_pieces(const std::string &record,
+                               const unsigned int n_local)
   {
-    // BASE_NNNNN.pvtu names the pieces BASE_NNNNN.R.vtu, one per process.
+    // BASE_NNNNN.pvtu names the pieces BASE_NNNNN.R.vtu of the processes
+    // that own points (an empty piece makes VTK readers complain), or
+    // process 0's alone if none does.
     const std::string  stem = record.substr(0, record.size() - 5);
-    const unsigned int n
-      = Utilities::MPI::n_mpi_processes(settings.communicator);
     const unsigned int rank
       = Utilities::MPI::this_mpi_process(settings.communicator);
+    const std::vector<unsigned int> counts
+      = Utilities::MPI::all_gather(settings.communicator, n_local);
+    const bool               none = std::all_of(counts.begin(),
+                                  counts.end(),
+                                  [](const unsigned int c) { return c == 0; });
     std::vector<std::string> pieces;
-    for (unsigned int r = 0; r < n; ++r)
-      pieces.push_back(stem + "." + std::to_string(r) + ".vtu");
+    for (unsigned int r = 0; r < counts.size(); ++r)
+      if (counts[r] > 0 || (none && r == 0))
+        pieces.push_back(stem + "." + std::to_string(r) + ".vtu");
     // A failure on one process is everyone's (no process may wait for
     // pieces that never come), and the record is written once every piece
     // is complete.
     std::string error;
     try
       {
-        write_file_atomically(settings.directory + "/" + pieces[rank],
-                              [&](std::ostream &out) {
-                                particle_output.write_vtu(out);
-                              });
+        if (n_local > 0 || (none && rank == 0))
+          write_file_atomically(settings.directory + "/" + stem + "."
+                                  + std::to_string(rank) + ".vtu",
+                                [&](std::ostream &out) {
+                                  particle_output.write_vtu(out);
+                                });
       }
     catch (const std::exception &e)
       {

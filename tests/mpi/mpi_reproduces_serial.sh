@@ -87,7 +87,7 @@ run_case() {
       || { echo "  output files: serial $a, MPI $b"; failed=1; }
     records=$(ls "$dir" | grep -c '^particles_[0-9]*\.pvtu$')
     pieces=$(ls "$dir" | grep -c '^particles_[0-9]*\.[0-9]*\.vtu$')
-    [ "$pieces" = $((records * np)) ] \
+    [ "$pieces" -le $((records * np)) ] && [ "$pieces" -ge "$records" ] \
       || { echo "  $records PVTU records but $pieces pieces on $np processes"; failed=1; }
     # Every file written holds what the serial run wrote, bit for bit (as
     # written, float32 for the points): the points' state and vorticity
@@ -133,13 +133,14 @@ if [ $all_cases = 1 ]; then
     --set "Bodies/Body 0/Volumetric smoothing=none" \
     --set "Output/Write grid=true"
   # A column of one cell (8 points) in the whole tank: METIS weighs the
-  # empty cells, so the other processes own no point and write empty
-  # pieces (VTU) or no rows (HDF5, a collective write of nothing).
+  # empty cells, so the other processes own no point and write no piece
+  # (VTU: the record names only the pieces with points) or no rows (HDF5, a
+  # collective write of nothing).
   run_case empty_processes default_dam_break \
     --set "Bodies/Body 0/Box upper corner=0.0114, 0.0114"
   run_case empty_processes_hdf5 default_dam_break --set "Output/Format=hdf5" \
     --set "Bodies/Body 0/Box upper corner=0.0114, 0.0114"
-  grep -q 'NumberOfPoints="0"' "$work"/empty_processes_3/particles_00000.[12].vtu \
+  [ "$(grep -c '<Piece' "$work"/empty_processes_3/particles_00000.pvtu)" -lt 3 ] \
     || { echo "empty_processes: every process owned points"; failed=1; }
   run_case geotube_hdf5 geotube_A6.45 --set "Output/Format=hdf5" \
     --set "Simulation/Maximum number of steps=100" --set "Grid/Cell size=0.16"

@@ -85,10 +85,10 @@ namespace fsgmpm
     restore(const State &state);
 
   private:
-    /// MPI, VTU: this process's points as its piece of the PVTU file
-    /// @p record (collective); process 0 writes the record.
+    /// MPI, VTU: this process's @p n_local points as its piece of the
+    /// PVTU file @p record (collective); process 0 writes the record.
     void
-    write_pieces(const std::string &record);
+    write_pieces(const std::string &record, const unsigned int n_local);
 
     Settings            settings;
     bool                parallel, root;
