@@ -17,6 +17,15 @@ test -s out/particles.pvd
 ls out/particles_*.vtu >/dev/null
 grep -q '"termination": "end_time"' out/summary.json
 grep -q '"lost_particles": 0' out/summary.json
+# The measured memory: the process's peak resident set (the libraries
+# alone are some 150 MB), and per point that peak over the points.
+/usr/bin/python3 - out/summary.json <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+peak, per_point = s["peak_resident_bytes"], s["resident_bytes_per_particle"]
+assert 50e6 < peak < 2e9, peak
+assert abs(per_point * s["particles"] - peak) < 1e-9 * peak, (per_point, peak)
+PY
 "$exe" "$2/prm/default_dam_break.prm" --set "Simulation/End time=0.05" \
   --set "Output/Directory=out2" --set "Output/Quiet=true"
 cmp out/monitors.csv out2/monitors.csv
