@@ -149,24 +149,28 @@ namespace fsgmpm
                                            communicator)
             : std::make_unique<HDF5::File>(tmp,
                                            HDF5::File::FileAccessMode::create);
+      // Every table is written even after one failed: in parallel each is
+      // a collective call that every process must make, or they would wait
+      // for one another forever.
       bool ok
-        = write_table(*file, "nodes", positions, 3, parallel, offset, total)
-          && write_table(*file,
-                         "cells",
-                         cells,
-                         nodes_per_cell(type),
+        = write_table(*file, "nodes", positions, 3, parallel, offset, total);
+      ok = write_table(*file,
+                       "cells",
+                       cells,
+                       nodes_per_cell(type),
+                       parallel,
+                       offset,
+                       n_cells)
+           && ok;
+      for (const auto &f : fields)
+        ok = write_table(*file,
+                         f.name,
+                         f.values,
+                         f.n_components,
                          parallel,
                          offset,
-                         n_cells);
-      for (const auto &f : fields)
-        ok = ok
-             && write_table(*file,
-                            f.name,
-                            f.values,
-                            f.n_components,
-                            parallel,
-                            offset,
-                            f.on_cells ? n_cells : n_nodes);
+                         f.on_cells ? n_cells : n_nodes)
+             && ok;
       file.reset();
       if (parallel)
         ok = Utilities::MPI::min(int(ok), communicator) == 1;
