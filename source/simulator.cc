@@ -8,6 +8,7 @@
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/parallel/distributed_points.h>
+#include <fsgmpm/parallel/process_count.h>
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/run/energy_balance.h>
@@ -191,8 +192,7 @@ namespace fsgmpm
   void
   Simulator<dim>::setup_partition()
   {
-    if (!Utilities::MPI::job_supports_mpi()
-        || Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+    if (Parallel::n_processes(MPI_COMM_WORLD) == 1)
       return;
     root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
     const std::string n_ranks

@@ -7,6 +7,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <fsgmpm/io/hdf5_setup.h>
+#include <fsgmpm/parallel/process_count.h>
 
 #include <fsgmpm/io/checkpoint_file.h>
 
@@ -206,8 +207,7 @@ namespace fsgmpm
                                      const MPI_Comm     communicator)
     : file_name(file_name)
   {
-    if (!Utilities::MPI::job_supports_mpi()
-        || Utilities::MPI::n_mpi_processes(communicator) == 1)
+    if (Parallel::n_processes(communicator) == 1)
       {
         read();
         return;

@@ -5,6 +5,7 @@
 #include <fsgmpm/io/membrane_fe_output.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/run_output.h>
+#include <fsgmpm/parallel/process_count.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -14,9 +15,7 @@ namespace fsgmpm
   template <int dim>
   RunOutput<dim>::RunOutput(const Settings &settings)
     : settings(settings)
-    // (A program started without an MPI launcher never initialises MPI.)
-    , parallel(Utilities::MPI::job_supports_mpi()
-               && Utilities::MPI::n_mpi_processes(settings.communicator) > 1)
+    , parallel(Parallel::n_processes(settings.communicator) > 1)
     , root(!parallel
            || Utilities::MPI::this_mpi_process(settings.communicator) == 0)
     , particle_series(settings.directory,

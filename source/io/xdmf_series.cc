@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/io/hdf5_setup.h>
+#include <fsgmpm/parallel/process_count.h>
 
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/xdmf_series.h>
@@ -97,9 +98,7 @@ namespace fsgmpm
                     const std::vector<unsigned int> &connectivity,
                     const std::vector<Field>        &fields)
   {
-    // (A program started without an MPI launcher never initialises MPI.)
-    const bool parallel = Utilities::MPI::job_supports_mpi()
-                          && Utilities::MPI::n_mpi_processes(communicator) > 1;
+    const bool parallel = Parallel::n_processes(communicator) > 1;
     const bool root
       = !parallel || Utilities::MPI::this_mpi_process(communicator) == 0;
     AssertThrow(!parallel || (type == CellType::vertex && connectivity.empty()),
