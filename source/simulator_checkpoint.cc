@@ -88,28 +88,22 @@ namespace fsgmpm
   Simulator<dim>::write_checkpoint(const double wall_seconds)
   {
     const auto start = std::chrono::steady_clock::now();
-    // MPI: process 0 writes the points of all processes, in the serial
-    // order, and the partition; everything else is the same everywhere.
-    ParticleStore<dim> all_particles;
-    if (partition)
-      {
-        DistributedPoints::gather_on_root(*partition, particles, all_particles);
-        if (!root)
-          {
-            checkpoint_seconds += std::chrono::duration<double>(
-                                    std::chrono::steady_clock::now() - start)
-                                    .count();
-            return;
-          }
-      }
+    // MPI: one file for all processes, written collectively; each process
+    // writes its own points, process 0 everything else (the same
+    // everywhere) and the partition.
+    const MPI_Comm communicator
+      = partition ? partition->get_communicator() : MPI_COMM_SELF;
     const fs::path directory
       = fs::path(params.output_directory) / "checkpoints";
-    fs::create_directories(directory);
+    if (root)
+      fs::create_directories(directory);
+    if (partition) // every process opens the file in it
+      MPI_Barrier(communicator);
     char name[40];
     std::snprintf(name, sizeof(name), "checkpoint_%010u", step);
     std::string file_name;
     {
-      CheckpointWriter out((directory / name).string());
+      CheckpointWriter out((directory / name).string(), communicator);
       out.put("fsgmpm/version", std::string(FSGMPM_VERSION));
       out.put("fsgmpm/dim", double(dim));
       out.put("fsgmpm/parameters", listing_text(parameter_listing));
@@ -125,7 +119,9 @@ namespace fsgmpm
       out.put("run/counters", relaxation.counter_state());
       out.put("run/stability_guard", stability_guard.state());
 
-      out.put("output/monitor_bytes", double(monitor_file->size()));
+      // Process 0 writes monitors.csv (the others have no monitor file).
+      out.put("output/monitor_bytes",
+              root ? double(monitor_file->size()) : 0.);
       out.put("output/next_output_time", output_schedule.next_time());
       out.put("output/last_output_step",
               std::vector<unsigned int>{output_schedule.last_step()});
@@ -142,7 +138,7 @@ namespace fsgmpm
       out.put("cost/particle_updates", double(particle_updates));
       out.put("cost/checkpoint_seconds", checkpoint_seconds);
 
-      StateCheckpoint::save(out, partition ? all_particles : particles);
+      StateCheckpoint::save(out, particles);
       if (partition)
         {
           out.put("mpi/ranks", std::vector<unsigned int>{partition->n_ranks()});
@@ -158,30 +154,39 @@ namespace fsgmpm
       file_name = out.commit();
     }
     // Read it back before older ones go: HDF5 may report a failed write
-    // (a full disk) only as a file that does not read back.
+    // (a full disk) only as a file that does not read back. With MPI each
+    // process reads back what it wrote.
+    std::string error;
     try
       {
-        CheckpointReader verify(file_name);
+        CheckpointReader verify(file_name, communicator);
       }
     catch (const ExceptionBase &e)
       {
-        fs::remove(file_name);
+        error = message_of(e);
+      }
+    if (!error.empty())
+      {
+        if (root)
+          fs::remove(file_name);
         AssertThrow(false,
                     ExcMessage("Writing the checkpoint <" + file_name
-                               + "> failed: it does not read back ("
-                               + message_of(e)
+                               + "> failed: it does not read back (" + error
                                + "). Is the disk full? The previous "
                                  "checkpoints are kept."));
       }
     // Keep the newest two.
-    const auto files = checkpoint_files(directory);
-    for (unsigned int k = 2; k < files.size(); ++k)
-      fs::remove(files[k]);
+    if (root)
+      {
+        const auto files = checkpoint_files(directory);
+        for (unsigned int k = 2; k < files.size(); ++k)
+          fs::remove(files[k]);
+      }
     const double seconds
       = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
     checkpoint_seconds += seconds;
-    if (!params.quiet)
+    if (!params.quiet && root)
       std::cout << "  checkpoint " << file_name << ": " << std::setprecision(3)
                 << fs::file_size(file_name) / 1e6 << " MB in " << seconds
                 << " s" << std::endl;
@@ -293,10 +298,13 @@ namespace fsgmpm
       }
     if (partition)
       {
-        // Every process read all points; each keeps its own. With as many
-        // processes as the checkpointed run, its partition (the same
-        // cells, so the same sums, as the uninterrupted run); otherwise a
-        // new one.
+        // With as many processes as the checkpointed run, its partition
+        // (the same cells, so the same sums, as the uninterrupted run), and
+        // each process read its own points; otherwise a new partition, and
+        // each process read an even share of the points (or, from a
+        // checkpoint of an older version, all of them) and sends them to
+        // their owners.
+        const MPI_Comm     communicator = partition->get_communicator();
         const unsigned int ranks
           = in.has("mpi/ranks") ? in.uints("mpi/ranks").at(0) : 1;
         if (ranks == partition->n_ranks())
@@ -310,9 +318,20 @@ namespace fsgmpm
             for (const unsigned int c : particles.occupied_cells)
               points_per_cell[c]
                 = particles.cell_end[c] - particles.cell_begin[c];
+            if (in.rows_split())
+              Utilities::MPI::sum(points_per_cell,
+                                  communicator,
+                                  points_per_cell);
             partition->partition(points_per_cell);
           }
-        DistributedPoints::keep_owned(*partition, particles);
+        if (in.rows_split())
+          {
+            particles.next_id
+              = Utilities::MPI::max(particles.next_id, communicator);
+            DistributedPoints::migrate(*partition, particles);
+          }
+        else
+          DistributedPoints::keep_owned(*partition, particles);
         DistributedPoints::add_ghosts(*partition, particles);
       }
     // The nodal fields of the first step after the restart are rebuilt

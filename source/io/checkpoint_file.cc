@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 
 namespace fsgmpm
@@ -76,20 +77,31 @@ namespace fsgmpm
       return name;
     }
 
-    /// Write a dataset; false if HDF5 failed. deal.II's HDF5 wrappers do
+    /// Write @p local as the values from @p offset on of a dataset of
+    /// @p total values; false if HDF5 failed. deal.II's HDF5 wrappers do
     /// not throw when HDF5 fails to create or write a dataset (HDF5's error
     /// stack tells), and an HDF5::File destroyed while an exception is in
     /// flight aborts the program: so this reports, and the caller closes
-    /// the file before it throws.
-    template <typename Container>
+    /// the file before it throws. In a file opened on several processes
+    /// this is collective: every process writes its part (or none).
+    template <typename Number>
     bool
-    write_dataset_checked(HDF5::File        &file,
-                          const std::string &name,
-                          const Container   &data)
+    write_dataset_checked(HDF5::File                &file,
+                          const std::string         &name,
+                          const std::vector<Number> &local,
+                          const bool                 parallel,
+                          const hsize_t              offset,
+                          const hsize_t              total)
     {
       try
         {
-          file.write_dataset(name, data);
+          auto dataset = file.create_dataset<Number>(name, {total});
+          if (!parallel)
+            dataset.write(local);
+          else if (!local.empty())
+            dataset.write_hyperslab(local, {offset}, {hsize_t(local.size())});
+          else
+            dataset.template write_none<Number>();
         }
       catch (...)
         {
@@ -97,23 +109,67 @@ namespace fsgmpm
         }
       return H5Eget_num(H5E_DEFAULT) == 0;
     }
+
+    /// This process's values [first, first + count) of a dataset (all of
+    /// them in a serial read); collective in a parallel one.
+    template <typename Number>
+    std::vector<Number>
+    read_part(HDF5::File        &file,
+              const std::string &name,
+              const bool         parallel,
+              const hsize_t      first,
+              const hsize_t      count)
+    {
+      auto dataset = file.open_dataset(name);
+      if (!parallel)
+        return dataset.read<std::vector<Number>>();
+      if (count == 0)
+        {
+          dataset.read_none<Number>();
+          return {};
+        }
+      return dataset.read_hyperslab<std::vector<Number>>({first}, {count});
+    }
+
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      return Utilities::trim(info.str());
+    }
   } // namespace
 
 
 
-  CheckpointWriter::CheckpointWriter(const std::string &stem)
+  CheckpointWriter::CheckpointWriter(const std::string &stem,
+                                     const MPI_Comm     communicator)
     : stem(stem)
     , tmp_name(stem + ".h5.tmp")
+    , communicator(communicator)
+    , parallel(Parallel::n_processes(communicator) > 1)
+    , root(!parallel || Utilities::MPI::this_mpi_process(communicator) == 0)
   {
-    std::filesystem::remove(tmp_name);
+    if (root)
+      std::filesystem::remove(tmp_name);
     prepare_hdf5();
+    bool created = true;
     try
       {
-        file = std::make_unique<HDF5::File>(tmp_name,
-                                            HDF5::File::FileAccessMode::create);
+        file = parallel ? std::make_unique<HDF5::File>(
+                 tmp_name, HDF5::File::FileAccessMode::create, communicator)
+                        : std::make_unique<HDF5::File>(
+                          tmp_name, HDF5::File::FileAccessMode::create);
       }
     catch (...)
       {
+        created = false;
+      }
+    if (parallel)
+      created = Utilities::MPI::min(int(created), communicator) == 1;
+    if (!created)
+      {
+        file.reset();
         AssertThrow(false,
                     ExcMessage("Cannot create the checkpoint file <" + tmp_name
                                + ">."));
@@ -125,32 +181,108 @@ namespace fsgmpm
   CheckpointWriter::~CheckpointWriter()
   {
     // Not committed (an exception while writing): leave no partial file.
+    // The exceptions of this class are thrown by every process alike, so
+    // every process closes the file here.
     if (file)
       {
         file.reset();
         std::error_code ignored;
-        std::filesystem::remove(tmp_name, ignored);
+        if (root)
+          std::filesystem::remove(tmp_name, ignored);
       }
   }
 
 
 
-  template <typename Container>
   void
-  CheckpointWriter::write_or_fail(const std::string &name,
-                                  const Container   &data)
+  CheckpointWriter::fail(const std::string &message)
   {
-    if (write_dataset_checked(*file, dataset_name(name), data))
-      return;
-    // Close and remove the partial file before throwing (see above).
+    // Close (collectively) and remove the partial file before throwing.
     file.reset();
     std::error_code ignored;
-    std::filesystem::remove(tmp_name, ignored);
-    AssertThrow(false,
-                ExcMessage("Writing <" + name + "> to the checkpoint <"
-                           + tmp_name
-                           + "> failed (is the disk full?). The previous "
-                             "checkpoints are kept."));
+    if (root)
+      std::filesystem::remove(tmp_name, ignored);
+    AssertThrow(false, ExcMessage(message));
+    std::abort(); // not reached: AssertThrow throws
+  }
+
+
+
+  template <typename Number>
+  void
+  CheckpointWriter::write_or_fail(const std::string         &name,
+                                  const std::vector<Number> &local,
+                                  const unsigned long long   offset,
+                                  const unsigned long long   total)
+  {
+    bool ok = write_dataset_checked(
+      *file, dataset_name(name), local, parallel, offset, total);
+    // One process's failure is everyone's: the next write is collective.
+    if (parallel)
+      ok = Utilities::MPI::min(int(ok), communicator) == 1;
+    if (!ok)
+      fail("Writing <" + name + "> to the checkpoint <" + tmp_name
+           + "> failed (is the disk full?). The previous checkpoints are "
+             "kept.");
+  }
+
+
+
+  template <typename Number>
+  void
+  CheckpointWriter::put_replicated(const char                 kind,
+                                   const std::string         &name,
+                                   const std::vector<Number> &data)
+  {
+    // Process 0's data are written (another process may hold none: the
+    // output series are process 0's).
+    unsigned long long size = data.size();
+    if (parallel)
+      size = Utilities::MPI::broadcast(communicator, size);
+    entries
+      += std::string(1, kind) + " " + name + " " + std::to_string(size) + "\n";
+    // HDF5 datasets cannot be empty: an empty array is only listed.
+    if (size > 0)
+      write_or_fail(name, root ? data : std::vector<Number>(), 0, size);
+  }
+
+
+
+  template <typename Number>
+  void
+  CheckpointWriter::put_split(const char                 kind,
+                              const std::string         &name,
+                              const std::vector<Number> &local,
+                              const unsigned int         columns)
+  {
+    Assert(columns > 0 && local.size() % columns == 0, ExcInternalError());
+    const unsigned long long  n_local = local.size();
+    unsigned long long        offset = 0, total = n_local;
+    std::vector<unsigned int> rows{
+      static_cast<unsigned int>(n_local / columns)};
+    if (parallel)
+      {
+        MPI_Exscan(
+          &n_local, &offset, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, communicator);
+        if (root)
+          offset = 0; // MPI_Exscan leaves process 0's result undefined
+        total = Utilities::MPI::sum(n_local, communicator);
+        rows  = Utilities::MPI::all_gather(communicator, rows[0]);
+      }
+    // Every table has the same rows on each process (or none at all).
+    if (total > 0)
+      {
+        if (rows_per_process.empty())
+          rows_per_process = rows;
+        AssertThrow(rows == rows_per_process,
+                    ExcMessage("The checkpoint's table <" + name
+                               + "> has other rows per process than the "
+                                 "tables before it."));
+      }
+    entries += std::string(1, kind) + " " + name + " " + std::to_string(total)
+               + " " + std::to_string(columns) + "\n";
+    if (total > 0)
+      write_or_fail(name, local, offset, total);
   }
 
 
@@ -159,10 +291,7 @@ namespace fsgmpm
   CheckpointWriter::put(const std::string         &name,
                         const std::vector<double> &data)
   {
-    entries += "d " + name + " " + std::to_string(data.size()) + "\n";
-    // HDF5 datasets cannot be empty: an empty array is only listed.
-    if (!data.empty())
-      write_or_fail(name, data);
+    put_replicated('d', name, data);
   }
 
 
@@ -171,9 +300,7 @@ namespace fsgmpm
   CheckpointWriter::put(const std::string               &name,
                         const std::vector<unsigned int> &data)
   {
-    entries += "u " + name + " " + std::to_string(data.size()) + "\n";
-    if (!data.empty())
-      write_or_fail(name, data);
+    put_replicated('u', name, data);
   }
 
 
@@ -181,9 +308,27 @@ namespace fsgmpm
   void
   CheckpointWriter::put(const std::string &name, const std::string &text)
   {
-    entries += "s " + name + " " + std::to_string(text.size()) + "\n";
-    if (!text.empty())
-      write_or_fail(name, bytes_of(text));
+    put_replicated('s', name, bytes_of(text));
+  }
+
+
+
+  void
+  CheckpointWriter::put_rows(const std::string         &name,
+                             const std::vector<double> &local,
+                             const unsigned int         columns)
+  {
+    put_split('D', name, local, columns);
+  }
+
+
+
+  void
+  CheckpointWriter::put_rows(const std::string               &name,
+                             const std::vector<unsigned int> &local,
+                             const unsigned int               columns)
+  {
+    put_split('U', name, local, columns);
   }
 
 
@@ -191,13 +336,31 @@ namespace fsgmpm
   std::string
   CheckpointWriter::commit()
   {
-    write_or_fail("checkpoint_entries", bytes_of(entries));
+    put("checkpoint/rows_per_process", rows_per_process);
+    write_or_fail("checkpoint_entries",
+                  root ? bytes_of(entries) : std::vector<unsigned int>(),
+                  0,
+                  entries.size());
     file.reset(); // H5Fclose: everything is in the file
     // The hash of the file's bytes goes into its name, so that a reader
     // checks the file before HDF5 parses it (deal.II's HDF5 wrappers do not
-    // survive a damaged file).
-    const std::string name = stem + "_" + hex(file_hash(tmp_name)) + ".h5";
-    std::filesystem::rename(tmp_name, name);
+    // survive a damaged file). Process 0 reads the file and renames it.
+    std::string name, error;
+    if (root)
+      {
+        name = stem + "_" + hex(file_hash(tmp_name)) + ".h5";
+        std::error_code failed;
+        std::filesystem::rename(tmp_name, name, failed);
+        if (failed)
+          error = "Cannot rename the checkpoint <" + tmp_name + "> to <" + name
+                  + ">: " + failed.message() + ".";
+      }
+    if (parallel)
+      {
+        name  = Utilities::MPI::broadcast(communicator, name);
+        error = Utilities::MPI::broadcast(communicator, error);
+      }
+    AssertThrow(error.empty(), ExcMessage(error));
     return name;
   }
 
@@ -206,37 +369,30 @@ namespace fsgmpm
   CheckpointReader::CheckpointReader(const std::string &file_name,
                                      const MPI_Comm     communicator)
     : file_name(file_name)
+    , communicator(communicator)
   {
-    if (Parallel::n_processes(communicator) == 1)
-      {
-        read();
-        return;
-      }
-    // Process 0 reads the file and sends its entries (or why it cannot be
-    // read) to the others: HDF5 locks a file that one process has open.
+    const bool parallel = Parallel::n_processes(communicator) > 1;
+    // Process 0 checks the file's bytes and tells the others.
     std::string error;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+    if (!parallel || Utilities::MPI::this_mpi_process(communicator) == 0)
       try
         {
-          read();
+          check_hash();
         }
       catch (const ExceptionBase &e)
         {
-          std::ostringstream info;
-          e.print_info(info);
-          error = Utilities::trim(info.str());
+          error = message_of(e);
         }
-    error = Utilities::MPI::broadcast(communicator, error);
+    if (parallel)
+      error = Utilities::MPI::broadcast(communicator, error);
     AssertThrow(error.empty(), ExcMessage(error));
-    double_data = Utilities::MPI::broadcast(communicator, double_data);
-    uint_data   = Utilities::MPI::broadcast(communicator, uint_data);
-    text_data   = Utilities::MPI::broadcast(communicator, text_data);
+    read();
   }
 
 
 
   void
-  CheckpointReader::read()
+  CheckpointReader::check_hash() const
   {
     // The name ends in _HASH.h5, the hash of the file's bytes.
     const auto underscore = file_name.rfind('_');
@@ -254,56 +410,162 @@ namespace fsgmpm
                            + ">: it is damaged (truncated or changed; the "
                              "hash of its bytes is "
                            + found + ", its name says " + named + ")."));
+  }
 
+
+
+  void
+  CheckpointReader::read()
+  {
+    const bool         parallel  = Parallel::n_processes(communicator) > 1;
+    const unsigned int n_readers = Parallel::n_processes(communicator);
+    const unsigned int me
+      = parallel ? Utilities::MPI::this_mpi_process(communicator) : 0;
     // HDF5 would print its error stack for an unreadable file; the message
     // below says what matters.
     prepare_hdf5();
     // The file lives outside the try: an HDF5::File destroyed while an
-    // exception is in flight aborts the program.
+    // exception is in flight aborts the program. Each entry is read by
+    // every process (collective calls); whether it could be is agreed on
+    // before the next, so that no process waits for one that gave up.
     std::unique_ptr<HDF5::File> file_pointer;
-    bool                        readable = true;
+    const auto                  agree = [&](bool ok) {
+      return parallel ? Utilities::MPI::min(int(ok), communicator) == 1 : ok;
+    };
+    bool readable = true;
     try
       {
         file_pointer
-          = std::make_unique<HDF5::File>(file_name,
-                                         HDF5::File::FileAccessMode::open);
-        HDF5::File &file       = *file_pointer;
-        const auto  list_bytes = file.open_dataset("checkpoint_entries")
-                                  .read<std::vector<unsigned int>>();
-        std::istringstream list(
-          std::string(list_bytes.begin(), list_bytes.end()));
-        std::string line;
-        while (std::getline(list, line))
-          {
-            const auto first = line.find(' '), last = line.rfind(' ');
-            const char kind = line[0];
-            const auto name = line.substr(first + 1, last - first - 1);
-            const auto size = std::stoul(line.substr(last + 1));
-            if (kind == 'd')
-              {
-                auto &v = double_data[name];
-                if (size > 0)
-                  v = file.open_dataset(dataset_name(name))
-                        .read<std::vector<double>>();
-                AssertThrow(v.size() == size, ExcInternalError());
-              }
-            else
-              {
-                std::vector<unsigned int> v;
-                if (size > 0)
-                  v = file.open_dataset(dataset_name(name))
-                        .read<std::vector<unsigned int>>();
-                AssertThrow(v.size() == size, ExcInternalError());
-                if (kind == 'u')
-                  uint_data[name] = std::move(v);
-                else
-                  text_data[name].assign(v.begin(), v.end());
-              }
-          }
+          = parallel
+              ? std::make_unique<HDF5::File>(file_name,
+                                             HDF5::File::FileAccessMode::open,
+                                             communicator)
+              : std::make_unique<HDF5::File>(file_name,
+                                             HDF5::File::FileAccessMode::open);
       }
     catch (...)
       {
         readable = false;
+      }
+    readable = agree(readable);
+
+    struct Entry
+    {
+      char          kind;
+      std::string   name;
+      unsigned long size, columns;
+    };
+    std::vector<Entry> list;
+    if (readable)
+      {
+        try
+          {
+            const auto bytes = file_pointer->open_dataset("checkpoint_entries")
+                                 .read<std::vector<unsigned int>>();
+            std::istringstream lines(std::string(bytes.begin(), bytes.end()));
+            std::string        line;
+            while (std::getline(lines, line))
+              {
+                std::istringstream words(line);
+                Entry              e{' ', "", 0, 1};
+                words >> e.kind >> e.name >> e.size;
+                if (e.kind == 'D' || e.kind == 'U')
+                  words >> e.columns;
+                AssertThrow(!words.fail() && e.columns > 0, ExcInternalError());
+                list.push_back(e);
+              }
+          }
+        catch (...)
+          {
+            readable = false;
+          }
+        readable = agree(readable);
+      }
+
+    // The rows each process wrote (checkpoints of older versions: one
+    // process wrote all).
+    std::vector<unsigned long> written_rows;
+    for (const auto &e : list)
+      if (readable && e.name == "checkpoint/rows_per_process" && e.size > 0)
+        {
+          try
+            {
+              const auto v = read_part<unsigned int>(
+                *file_pointer, dataset_name(e.name), parallel, 0, e.size);
+              written_rows.assign(v.begin(), v.end());
+            }
+          catch (...)
+            {
+              readable = false;
+            }
+          readable = agree(readable);
+        }
+    as_written = written_rows.size() == n_readers;
+    for (const auto &e : list)
+      if (e.kind == 'D' || e.kind == 'U')
+        split = parallel;
+
+    for (const auto &e : list)
+      {
+        if (!readable)
+          break;
+        // This process's part: all values, or of a table of rows those it
+        // wrote, or an even share of the rows.
+        hsize_t first = 0, count = e.size;
+        if (parallel && (e.kind == 'D' || e.kind == 'U'))
+          {
+            const unsigned long rows = e.size / e.columns;
+            unsigned long       begin, end;
+            if (as_written && rows > 0)
+              {
+                begin = std::accumulate(written_rows.begin(),
+                                        written_rows.begin() + me,
+                                        0ul);
+                end   = begin + written_rows[me];
+              }
+            else
+              {
+                begin = rows * me / n_readers;
+                end   = rows * (me + 1) / n_readers;
+              }
+            first = begin * e.columns;
+            count = (end - begin) * e.columns;
+          }
+        try
+          {
+            AssertThrow(e.size % e.columns == 0, ExcInternalError());
+            if (e.kind == 'd' || e.kind == 'D')
+              {
+                auto &v = double_data[e.name];
+                if (e.size > 0)
+                  v = read_part<double>(*file_pointer,
+                                        dataset_name(e.name),
+                                        parallel,
+                                        first,
+                                        count);
+                AssertThrow(v.size() == count, ExcInternalError());
+              }
+            else
+              {
+                std::vector<unsigned int> v;
+                if (e.size > 0)
+                  v = read_part<unsigned int>(*file_pointer,
+                                              dataset_name(e.name),
+                                              parallel,
+                                              first,
+                                              count);
+                AssertThrow(v.size() == count, ExcInternalError());
+                if (e.kind == 's')
+                  text_data[e.name].assign(v.begin(), v.end());
+                else
+                  uint_data[e.name] = std::move(v);
+              }
+          }
+        catch (...)
+          {
+            readable = false;
+          }
+        readable = agree(readable);
       }
     file_pointer.reset();
     AssertThrow(readable,

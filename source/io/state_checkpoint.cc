@@ -10,19 +10,20 @@ namespace fsgmpm
     void
     save(CheckpointWriter &out, const ParticleStore<dim> &p)
     {
-      out.put_tensors("particles/position", p.position);
-      out.put_tensors("particles/velocity", p.velocity);
+      // One row per point; with MPI each process writes its own points.
+      out.put_tensor_rows("particles/position", p.position);
+      out.put_tensor_rows("particles/velocity", p.velocity);
       out.put("particles/has_affine_velocity", double(p.has_affine_velocity()));
-      out.put_tensors("particles/affine_velocity", p.affine_velocity);
-      out.put_tensors("particles/stress", p.stress);
-      out.put("particles/mass", p.mass);
-      out.put("particles/volume", p.volume);
-      out.put("particles/reference_volume", p.reference_volume);
-      out.put("particles/cell", p.cell);
-      out.put_integers("particles/material_id", p.material_id);
-      out.put_integers("particles/body_id", p.body_id);
-      out.put_integers("particles/free_surface", p.free_surface);
-      out.put("particles/id", p.id);
+      out.put_tensor_rows("particles/affine_velocity", p.affine_velocity);
+      out.put_tensor_rows("particles/stress", p.stress);
+      out.put_rows("particles/mass", p.mass);
+      out.put_rows("particles/volume", p.volume);
+      out.put_rows("particles/reference_volume", p.reference_volume);
+      out.put_rows("particles/cell", p.cell);
+      out.put_integer_rows("particles/material_id", p.material_id);
+      out.put_integer_rows("particles/body_id", p.body_id);
+      out.put_integer_rows("particles/free_surface", p.free_surface);
+      out.put_rows("particles/id", p.id);
     }
 
 
@@ -70,11 +71,15 @@ namespace fsgmpm
                     ExcMessage("The checkpoint names cell " + std::to_string(c)
                                + ", but the mesh has " + std::to_string(n_cells)
                                + " cells: it was written for another mesh."));
+      // With MPI (in.rows_split()) the points this process read; the
+      // caller takes the maximum over the processes.
       p.next_id = 0;
       for (const unsigned int i : p.id)
         p.next_id = std::max(p.next_id, i + 1);
-      // The points were stored in the canonical order (by cell, then id);
-      // the sort only rebuilds the per-cell index.
+      p.ghost.clear();
+      // The points were stored by cell, then id (with MPI, process by
+      // process, each holding whole cells): the sort orders the cells and
+      // rebuilds the per-cell index, and keeps each cell's order.
       p.sort_by_cell(n_cells);
     }
 

@@ -229,29 +229,6 @@ namespace fsgmpm
 
 
     template <int dim>
-    void
-    gather_on_root(const DomainPartition<dim> &partition,
-                   const ParticleStore<dim>   &particles,
-                   ParticleStore<dim>         &all)
-    {
-      Assert(particles.ghost.empty(), ExcInternalError());
-      std::vector<char> buffer;
-      buffer.reserve(particles.size() * sizeof(Record<dim>));
-      for (unsigned int p = 0; p < particles.size(); ++p)
-        pack(particles, p, buffer);
-      const auto gathered
-        = Utilities::MPI::gather(partition.get_communicator(), buffer, 0);
-      all = ParticleStore<dim>();
-      if (particles.has_affine_velocity())
-        all.enable_affine_velocity();
-      for (const auto &b : gathered)
-        unpack(b, 0, all);
-      all.sort_by_cell(particles.cell_begin.size());
-    }
-
-
-
-    template <int dim>
     unsigned int
     global_size(const DomainPartition<dim> &partition,
                 const ParticleStore<dim>   &particles)
@@ -263,18 +240,15 @@ namespace fsgmpm
 
 
 
-#define FSGMPM_INSTANTIATE(dim)                                           \
-  template void         keep_owned<dim>(const DomainPartition<dim> &,     \
-                                ParticleStore<dim> &);            \
-  template void         add_ghosts<dim>(const DomainPartition<dim> &,     \
-                                ParticleStore<dim> &);            \
-  template void         migrate<dim>(const DomainPartition<dim> &,        \
-                             ParticleStore<dim> &);               \
-  template void         drop_ghosts<dim>(ParticleStore<dim> &);           \
-  template void         gather_on_root<dim>(const DomainPartition<dim> &, \
-                                    const ParticleStore<dim> &,   \
-                                    ParticleStore<dim> &);        \
-  template unsigned int global_size<dim>(const DomainPartition<dim> &,    \
+#define FSGMPM_INSTANTIATE(dim)                                        \
+  template void         keep_owned<dim>(const DomainPartition<dim> &,  \
+                                ParticleStore<dim> &);         \
+  template void         add_ghosts<dim>(const DomainPartition<dim> &,  \
+                                ParticleStore<dim> &);         \
+  template void         migrate<dim>(const DomainPartition<dim> &,     \
+                             ParticleStore<dim> &);            \
+  template void         drop_ghosts<dim>(ParticleStore<dim> &);        \
+  template unsigned int global_size<dim>(const DomainPartition<dim> &, \
                                          const ParticleStore<dim> &);
     FSGMPM_INSTANTIATE(2)
     FSGMPM_INSTANTIATE(3)

@@ -127,6 +127,10 @@ run_scene geocontainer_mpi "$src/prm/geocontainer_polygon.prm" 0.02 \
   "${coarse_geocontainer[@]}" --set "Simulation/Number of threads=1"
 # A restart on another number of processes continues from the same state
 # (a new partition): the same run, up to the order of the energy sums.
+# Each process of the 2-process run wrote its own points into the shared
+# file; 1 and 3 processes read them back in other shares.
+cp -r dam_break_mpi.full dam_break.mpi_to_serial
+cp -r dam_break_mpi.full dam_break.mpi_to_3
 "${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
   --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
   --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
@@ -141,6 +145,19 @@ cp -r dam_break.full dam_break.serial_to_mpi
 check "MPI: a serial run's checkpoint continues on 2 processes" \
   /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
   dam_break_mpi.full/monitors.csv dam_break.serial_to_mpi/monitors.csv --rtol 1e-12
+"$exe" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
+  --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
+  "${dam_break[@]}" --set "Simulation/End time=0.04" --restart dam_break.mpi_to_serial >/dev/null
+check "MPI: a 2-process run's checkpoint continues serially" \
+  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
+  dam_break_mpi.full/monitors.csv dam_break.mpi_to_serial/monitors.csv --rtol 1e-12
+mpi_launch 3 "$exe" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
+  --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
+  --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
+  --set "Simulation/End time=0.04" --restart dam_break.mpi_to_3 >/dev/null
+check "MPI: a 2-process run's checkpoint continues on 3 processes" \
+  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
+  dam_break_mpi.full/monitors.csv dam_break.mpi_to_3/monitors.csv --rtol 1e-12
 # Its PVD names the serial part's VTU files and the PVTU records after it.
 pvd_files_exist() {
   local f n=0

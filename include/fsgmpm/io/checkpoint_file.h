@@ -32,12 +32,21 @@ namespace fsgmpm
    * to "STEM_HASH.h5", HASH the 64-bit FNV-1a hash of the file's bytes; a
    * run killed while writing leaves the previous checkpoint intact, and a
    * reader refuses a truncated or changed file before HDF5 parses it.
+   *
+   * With several processes in the communicator the file is one, written
+   * collectively through MPI-IO (parallel HDF5): put() stores data that
+   * every process holds alike (process 0 writes it), put_rows() a table
+   * whose rows are split over the processes (the material points), each
+   * process writing its own rows after those of the processes before it.
+   * No process gathers the others' rows. Every call is collective.
    */
   class CheckpointWriter
   {
   public:
-    /// @p stem: the file's path without the hash and ".h5".
-    explicit CheckpointWriter(const std::string &stem);
+    /// @p stem: the file's path without the hash and ".h5" (the same on
+    /// every process of @p communicator).
+    explicit CheckpointWriter(const std::string &stem,
+                              const MPI_Comm     communicator = MPI_COMM_SELF);
     ~CheckpointWriter();
 
     void
@@ -66,20 +75,84 @@ namespace fsgmpm
       put(name, std::vector<unsigned int>(data.begin(), data.end()));
     }
 
+    /**
+     * A table of @p columns values per row whose rows are split over the
+     * processes: @p local holds this process's rows. Every table of one
+     * checkpoint has the same rows per process, or none at all (an unused
+     * array, such as the affine velocities without APIC).
+     */
+    void
+    put_rows(const std::string         &name,
+             const std::vector<double> &local,
+             const unsigned int         columns = 1);
+    void
+    put_rows(const std::string               &name,
+             const std::vector<unsigned int> &local,
+             const unsigned int               columns = 1);
+
+    /// put_rows() for arrays of tensors of doubles, one row per tensor.
+    template <typename T>
+    void
+    put_tensor_rows(const std::string &name, const std::vector<T> &local)
+    {
+      put_rows(name, flatten(local), sizeof(T) / sizeof(double));
+    }
+
+    /// put_rows() for arrays of small integers (ids, flags).
+    template <typename Int>
+    void
+    put_integer_rows(const std::string &name, const std::vector<Int> &local)
+    {
+      put_rows(name, std::vector<unsigned int>(local.begin(), local.end()));
+    }
+
     /// Write the list of entries, close the file and rename it to its
-    /// final name, which is returned.
+    /// final name, which is returned (on every process).
     std::string
     commit();
 
   private:
-    /// Write a dataset, or close and remove the file and throw.
-    template <typename Container>
+    /// The contiguous doubles of an array of tensors.
+    template <typename T>
+    static std::vector<double>
+    flatten(const std::vector<T> &data);
+
+    /// Write a dataset of @p total values, of which this process writes
+    /// @p local from @p offset on; or close and remove the file and throw
+    /// (on every process alike).
+    template <typename Number>
     void
-    write_or_fail(const std::string &name, const Container &data);
+    write_or_fail(const std::string         &name,
+                  const std::vector<Number> &local,
+                  const unsigned long long   offset,
+                  const unsigned long long   total);
+
+    /// put() of replicated data: process 0 writes it.
+    template <typename Number>
+    void
+    put_replicated(const char                 kind,
+                   const std::string         &name,
+                   const std::vector<Number> &data);
+
+    template <typename Number>
+    void
+    put_split(const char                 kind,
+              const std::string         &name,
+              const std::vector<Number> &local,
+              const unsigned int         columns);
+
+    /// Close and remove the temporary file, then throw @p message.
+    [[noreturn]] void
+    fail(const std::string &message);
 
     std::string                         stem, tmp_name;
+    MPI_Comm                            communicator;
+    bool                                parallel, root;
     std::unique_ptr<dealii::HDF5::File> file;
     std::string                         entries;
+    /// The rows each process holds in the tables of put_rows() (empty
+    /// before the first).
+    std::vector<unsigned int> rows_per_process;
   };
 
 
@@ -88,18 +161,39 @@ namespace fsgmpm
    * Reads a checkpoint written by CheckpointWriter. The constructor checks
    * the file's bytes against the hash in its name, then reads every entry;
    * it throws an ExcMessage naming the file if it is damaged or unreadable.
+   *
+   * With several processes in the communicator the file is read
+   * collectively (parallel HDF5), and of each table of put_rows() a process
+   * reads only some rows: those it wrote, if the checkpoint was written by
+   * as many processes (rows_as_written()), otherwise an even share. A
+   * serial reader reads all rows.
    */
   class CheckpointReader
   {
   public:
-    /// With more than one process in @p communicator, process 0 reads
-    /// the file and sends its entries to the others (which throw the same
-    /// exception if it cannot be read).
+    /// Every process of @p communicator throws the same exception if the
+    /// file cannot be read.
     explicit CheckpointReader(const std::string &file_name,
                               const MPI_Comm     communicator = MPI_COMM_SELF);
 
     bool
     has(const std::string &name) const;
+
+    /// Whether this process holds only some rows of the tables written by
+    /// put_rows() (several processes read the checkpoint).
+    bool
+    rows_split() const
+    {
+      return split;
+    }
+
+    /// Whether each process holds the rows it wrote: the checkpoint was
+    /// written by as many processes as read it.
+    bool
+    rows_as_written() const
+    {
+      return as_written;
+    }
 
     const std::vector<double> &
     doubles(const std::string &name) const;
@@ -123,11 +217,19 @@ namespace fsgmpm
     }
 
   private:
-    /// Checks the hash and reads every entry of the file.
+    /// Checks the hash of the file's bytes (on process 0 of a parallel
+    /// read); throws if it differs.
+    void
+    check_hash() const;
+
+    /// Reads every entry of the file.
     void
     read();
 
     std::string                                      file_name;
+    MPI_Comm                                         communicator;
+    bool                                             split      = false;
+    bool                                             as_written = true;
     std::map<std::string, std::vector<double>>       double_data;
     std::map<std::string, std::vector<unsigned int>> uint_data;
     std::map<std::string, std::string>               text_data;
@@ -140,13 +242,22 @@ namespace fsgmpm
   CheckpointWriter::put_tensors(const std::string    &name,
                                 const std::vector<T> &data)
   {
+    put(name, flatten(data));
+  }
+
+
+
+  template <typename T>
+  std::vector<double>
+  CheckpointWriter::flatten(const std::vector<T> &data)
+  {
     static_assert(sizeof(T) % sizeof(double) == 0
                     && std::is_trivially_copyable<T>::value,
                   "put_tensors takes arrays of tensors of doubles");
     std::vector<double> flat(data.size() * sizeof(T) / sizeof(double));
     if (!data.empty())
       std::memcpy(flat.data(), data.data(), data.size() * sizeof(T));
-    put(name, flat);
+    return flat;
   }
 
 

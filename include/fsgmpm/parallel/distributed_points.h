@@ -55,16 +55,6 @@ namespace fsgmpm
     migrate(const DomainPartition<dim> &partition,
             ParticleStore<dim>         &particles);
 
-    /**
-     * All points on rank 0 (in the canonical order, as in a serial run),
-     * for output; an empty store elsewhere.
-     */
-    template <int dim>
-    void
-    gather_on_root(const DomainPartition<dim> &partition,
-                   const ParticleStore<dim>   &particles,
-                   ParticleStore<dim>         &all);
-
     /// The number of points over all processes.
     template <int dim>
     unsigned int
