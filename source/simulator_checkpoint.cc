@@ -120,8 +120,7 @@ namespace fsgmpm
       out.put("run/stability_guard", stability_guard.state());
 
       // Process 0 writes monitors.csv (the others have no monitor file).
-      out.put("output/monitor_bytes",
-              root ? double(monitor_file->size()) : 0.);
+      out.put("output/monitor_bytes", root ? double(monitor_file->size()) : 0.);
       out.put("output/next_output_time", output_schedule.next_time());
       out.put("output/last_output_step",
               std::vector<unsigned int>{output_schedule.last_step()});
@@ -350,8 +349,8 @@ namespace fsgmpm
   Simulator<dim>::restart(const std::string &directory)
   {
     const fs::path dir = fs::path(directory) / "checkpoints";
-    // MPI: process 0 reads the checkpoint (CheckpointReader) and its list
-    // of them counts, also where the others do not see its disk.
+    // MPI: process 0's list of the checkpoints counts; every process then
+    // opens the file (CheckpointReader, collectively).
     std::vector<fs::path> files;
     {
       std::vector<std::string> names;

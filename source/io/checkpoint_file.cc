@@ -79,9 +79,9 @@ namespace fsgmpm
 
     /// Write @p local as the values from @p offset on of a dataset of
     /// @p total values; false if HDF5 failed. deal.II's HDF5 wrappers do
-    /// not throw when HDF5 fails to create or write a dataset (HDF5's error
-    /// stack tells), and an HDF5::File destroyed while an exception is in
-    /// flight aborts the program: so this reports, and the caller closes
+    /// not throw when HDF5 fails to create or write a dataset
+    /// (Hdf5ErrorWatch tells), and an HDF5::File destroyed while an exception
+    /// is in flight aborts the program: so this reports, and the caller closes
     /// the file before it throws. In a file opened on several processes
     /// this is collective: every process writes its part (or none).
     template <typename Number>
@@ -93,6 +93,7 @@ namespace fsgmpm
                           const hsize_t              offset,
                           const hsize_t              total)
     {
+      const Hdf5ErrorWatch errors;
       try
         {
           auto dataset = file.create_dataset<Number>(name, {total});
@@ -107,7 +108,7 @@ namespace fsgmpm
         {
           return false;
         }
-      return H5Eget_num(H5E_DEFAULT) == 0;
+      return !errors.failed();
     }
 
     /// This process's values [first, first + count) of a dataset (all of
@@ -150,10 +151,12 @@ namespace fsgmpm
     , parallel(Parallel::n_processes(communicator) > 1)
     , root(!parallel || Utilities::MPI::this_mpi_process(communicator) == 0)
   {
+    std::error_code ignored;
     if (root)
-      std::filesystem::remove(tmp_name);
+      std::filesystem::remove(tmp_name, ignored);
     prepare_hdf5();
-    bool created = true;
+    const Hdf5ErrorWatch errors;
+    bool                 created = true;
     try
       {
         file = parallel ? std::make_unique<HDF5::File>(
@@ -165,27 +168,32 @@ namespace fsgmpm
       {
         created = false;
       }
+    created = created && !errors.failed();
     if (parallel)
       created = Utilities::MPI::min(int(created), communicator) == 1;
     if (!created)
-      {
-        file.reset();
-        AssertThrow(false,
-                    ExcMessage("Cannot create the checkpoint file <" + tmp_name
-                               + ">."));
-      }
+      fail("Cannot create the checkpoint file <" + tmp_name
+           + ">: is its directory writable"
+           + (parallel ? std::string(", and on a file system that every "
+                                     "process shares?")
+                       : std::string("?")));
   }
 
 
 
   CheckpointWriter::~CheckpointWriter()
   {
-    // Not committed (an exception while writing): leave no partial file.
-    // The exceptions of this class are thrown by every process alike, so
-    // every process closes the file here.
+    // Not committed: an exception from outside this class while the file
+    // was open (this class closes it before it throws). deal.II's HDF5
+    // objects abort the program if they are destroyed while an exception
+    // is in flight (closing is collective with MPI), so the file is left
+    // open, and the partial file removed.
     if (file)
       {
-        file.reset();
+        if (std::uncaught_exceptions() > 0)
+          (void)file.release();
+        else
+          file.reset();
         std::error_code ignored;
         if (root)
           std::filesystem::remove(tmp_name, ignored);
@@ -197,11 +205,14 @@ namespace fsgmpm
   void
   CheckpointWriter::fail(const std::string &message)
   {
-    // Close (collectively) and remove the partial file before throwing.
+    // Close (collectively) and remove the partial file before throwing,
+    // and before any process may abort the others on this error.
     file.reset();
     std::error_code ignored;
     if (root)
       std::filesystem::remove(tmp_name, ignored);
+    if (parallel)
+      MPI_Barrier(communicator);
     AssertThrow(false, ExcMessage(message));
     std::abort(); // not reached: AssertThrow throws
   }
@@ -215,6 +226,9 @@ namespace fsgmpm
                                   const unsigned long long   offset,
                                   const unsigned long long   total)
   {
+    AssertThrow(file,
+                ExcMessage("Writing <" + name + "> to the checkpoint <"
+                           + tmp_name + ">: its writer failed before."));
     bool ok = write_dataset_checked(
       *file, dataset_name(name), local, parallel, offset, total);
     // One process's failure is everyone's: the next write is collective.
@@ -274,10 +288,12 @@ namespace fsgmpm
       {
         if (rows_per_process.empty())
           rows_per_process = rows;
-        AssertThrow(rows == rows_per_process,
-                    ExcMessage("The checkpoint's table <" + name
-                               + "> has other rows per process than the "
-                                 "tables before it."));
+        // The same on every process (rows are gathered): all fail alike.
+        if (rows != rows_per_process)
+          fail("Internal error: the checkpoint's table <" + name
+               + "> has other rows per process than the tables before it "
+                 "(every table of the points has one row per point). "
+                 "Please report this.");
       }
     entries += std::string(1, kind) + " " + name + " " + std::to_string(total)
                + " " + std::to_string(columns) + "\n";
@@ -341,7 +357,19 @@ namespace fsgmpm
                   root ? bytes_of(entries) : std::vector<unsigned int>(),
                   0,
                   entries.size());
-    file.reset(); // H5Fclose: everything is in the file
+    {
+      // H5Fclose: everything is in the file (a full disk may show only
+      // here).
+      const Hdf5ErrorWatch errors;
+      file.reset();
+      bool ok = !errors.failed();
+      if (parallel)
+        ok = Utilities::MPI::min(int(ok), communicator) == 1;
+      if (!ok)
+        fail("Closing the checkpoint <" + tmp_name
+             + "> failed (is the disk full?). The previous checkpoints are "
+               "kept.");
+    }
     // The hash of the file's bytes goes into its name, so that a reader
     // checks the file before HDF5 parses it (deal.II's HDF5 wrappers do not
     // survive a damaged file). Process 0 reads the file and renames it.
@@ -429,25 +457,30 @@ namespace fsgmpm
     // every process (collective calls); whether it could be is agreed on
     // before the next, so that no process waits for one that gave up.
     std::unique_ptr<HDF5::File> file_pointer;
-    const auto                  agree = [&](bool ok) {
+    std::string                 failed_entry;
+    const auto agree = [&](bool ok, const Hdf5ErrorWatch &errors) {
+      ok = ok && !errors.failed();
       return parallel ? Utilities::MPI::min(int(ok), communicator) == 1 : ok;
     };
     bool readable = true;
-    try
-      {
-        file_pointer
-          = parallel
-              ? std::make_unique<HDF5::File>(file_name,
-                                             HDF5::File::FileAccessMode::open,
-                                             communicator)
-              : std::make_unique<HDF5::File>(file_name,
-                                             HDF5::File::FileAccessMode::open);
-      }
-    catch (...)
-      {
-        readable = false;
-      }
-    readable = agree(readable);
+    {
+      const Hdf5ErrorWatch errors;
+      try
+        {
+          file_pointer
+            = parallel
+                ? std::make_unique<HDF5::File>(file_name,
+                                               HDF5::File::FileAccessMode::open,
+                                               communicator)
+                : std::make_unique<HDF5::File>(
+                  file_name, HDF5::File::FileAccessMode::open);
+        }
+      catch (...)
+        {
+          readable = false;
+        }
+      readable = agree(readable, errors);
+    }
 
     struct Entry
     {
@@ -458,6 +491,8 @@ namespace fsgmpm
     std::vector<Entry> list;
     if (readable)
       {
+        failed_entry = "checkpoint_entries";
+        const Hdf5ErrorWatch errors;
         try
           {
             const auto bytes = file_pointer->open_dataset("checkpoint_entries")
@@ -479,7 +514,7 @@ namespace fsgmpm
           {
             readable = false;
           }
-        readable = agree(readable);
+        readable = agree(readable, errors);
       }
 
     // The rows each process wrote (checkpoints of older versions: one
@@ -488,6 +523,8 @@ namespace fsgmpm
     for (const auto &e : list)
       if (readable && e.name == "checkpoint/rows_per_process" && e.size > 0)
         {
+          failed_entry = e.name;
+          const Hdf5ErrorWatch errors;
           try
             {
               const auto v = read_part<unsigned int>(
@@ -498,7 +535,7 @@ namespace fsgmpm
             {
               readable = false;
             }
-          readable = agree(readable);
+          readable = agree(readable, errors);
         }
     as_written = written_rows.size() == n_readers;
     for (const auto &e : list)
@@ -531,6 +568,8 @@ namespace fsgmpm
             first = begin * e.columns;
             count = (end - begin) * e.columns;
           }
+        failed_entry = e.name;
+        const Hdf5ErrorWatch errors;
         try
           {
             AssertThrow(e.size % e.columns == 0, ExcInternalError());
@@ -565,12 +604,18 @@ namespace fsgmpm
           {
             readable = false;
           }
-        readable = agree(readable);
+        readable = agree(readable, errors);
       }
     file_pointer.reset();
-    AssertThrow(readable,
-                ExcMessage("Cannot read the checkpoint <" + file_name
-                           + ">: HDF5 cannot read it back."));
+    AssertThrow(
+      readable,
+      ExcMessage(
+        "Cannot read the checkpoint <" + file_name + ">: HDF5 cannot read "
+        + (failed_entry.empty() ? "it" : "its entry <" + failed_entry + ">")
+        + " back"
+        + (parallel ? " (is its directory on a file system that "
+                      "every process shares?)."
+                    : ".")));
   }
 
 

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
+#include <regex>
 
 namespace fsgmpm
 {
@@ -173,6 +175,43 @@ namespace fsgmpm
       }
     particle_xdmf.restore(state.xdmf_records[0]);
     membrane_xdmf.restore(state.xdmf_records[1]);
+    if (root)
+      remove_files_after(state);
+  }
+
+
+
+  template <int dim>
+  void
+  RunOutput<dim>::remove_files_after(const State &state) const
+  {
+    // The interrupted run's files after the checkpoint are written again,
+    // but not always under the same names: continued on another number of
+    // processes, a serial run's particles_N.vtu would stay beside the new
+    // particles_N.pvtu (and a reader of the directory would see the step
+    // twice), and the pieces particles_N.R.vtu of processes that are gone
+    // would stay. So every numbered file past the restored series goes.
+    namespace fs = std::filesystem;
+    const std::regex numbered(
+      R"((particles|grid|membrane)_(\d+)(\.\d+)?\.(vtu|pvtu|h5))");
+    const auto written = [&](const std::string &base, const bool h5) {
+      const unsigned int k = base == "particles" ? 0 : (base == "grid" ? 1 : 2);
+      if (!h5)
+        return state.series_times[k].size();
+      // XdmfSeries::records(): (time, nodes, cells) per step; the grid has
+      // no HDF5 series.
+      return k == 1 ? std::numeric_limits<std::size_t>::max()
+                    : state.xdmf_records[k == 0 ? 0 : 1].size() / 3;
+    };
+    for (const auto &entry : fs::directory_iterator(settings.directory))
+      {
+        std::smatch       match;
+        const std::string name = entry.path().filename().string();
+        if (std::regex_match(name, match, numbered)
+            && std::stoul(match[2].str())
+                 >= written(match[1].str(), match[4].str() == "h5"))
+          fs::remove(entry.path());
+      }
   }
 
   template class RunOutput<2>;

@@ -39,7 +39,7 @@ namespace fsgmpm
 
     /// A dataset of @p total_rows x @p columns values, of which @p values
     /// are the rows from @p offset on; false if HDF5 failed (deal.II's
-    /// wrappers do not throw then; HDF5's error stack tells). In a file
+    /// wrappers do not throw then; Hdf5ErrorWatch tells). In a file
     /// opened on several processes this is collective: every process
     /// writes its rows (or none) in one parallel write.
     template <typename Number>
@@ -52,7 +52,8 @@ namespace fsgmpm
                 const hsize_t              offset,
                 const hsize_t              total_rows)
     {
-      const hsize_t rows = values.size() / columns;
+      const hsize_t        rows = values.size() / columns;
+      const Hdf5ErrorWatch errors;
       try
         {
           auto dataset = file.create_dataset<Number>(
@@ -75,7 +76,7 @@ namespace fsgmpm
         {
           return false;
         }
-      return H5Eget_num(H5E_DEFAULT) == 0;
+      return !errors.failed();
     }
   } // namespace
 
@@ -170,7 +171,12 @@ namespace fsgmpm
                          offset,
                          f.on_cells ? n_cells : n_nodes)
              && ok;
-      file.reset();
+      {
+        // A full disk may show only when the file is closed.
+        const Hdf5ErrorWatch errors;
+        file.reset();
+        ok = ok && !errors.failed();
+      }
       if (parallel)
         ok = Utilities::MPI::min(int(ok), communicator) == 1;
       if (!ok && root)

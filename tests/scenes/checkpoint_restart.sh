@@ -65,6 +65,7 @@ run_scene() {
   check "$name: killed after its second checkpoint, before its end" \
     test "$(n_checkpoints $name.killed)" -ge 2 -a ! -f "$name.killed/summary.json"
   cp -r "$name.killed" "$name.truncated"
+  [ "$name" = dam_break ] && cp -r "$name.killed" dam_break.interrupted
 
   "${launch[@]}" "${args[@]}" --restart "$name.killed" >/dev/null
   check "$name: restart exits 0" test $? -eq 0
@@ -121,6 +122,12 @@ launch=(mpi_launch 2 "$exe")
 run_scene dam_break_mpi "$src/prm/default_dam_break.prm" 0.01 "${dam_break[@]}" \
   --set "Simulation/End time=0.03" --set "Simulation/Number of threads=1" \
   --set "Simulation/Repartition imbalance=1.03"
+# The granular collapse with APIC: the affine velocities are a table of
+# the checkpoint too.
+run_scene granular_mpi "$src/prm/granular_column_collapse.prm" 0.05 \
+  --set "Grid/Cell size=0.02" --set "Simulation/End time=0.15" \
+  --set "Simulation/Velocity transfer=APIC affine remap" \
+  --set "Simulation/Number of threads=1"
 run_scene geotube_mpi "$src/prm/geotube_A5.56.prm" 0.1 "${coarse_geotube[@]}" \
   --set "Simulation/Number of threads=1"
 run_scene geocontainer_mpi "$src/prm/geocontainer_polygon.prm" 0.02 \
@@ -169,6 +176,58 @@ pvd_files_exist() {
 }
 check "MPI: the continued series names the serial .vtu and the MPI .pvtu files" \
   pvd_files_exist dam_break.serial_to_mpi
+# Processes without points (2 points in the tank's corner, 3 processes)
+# write and read no rows: continued on 3 processes from its final
+# checkpoint, a run repeats the uninterrupted one byte for byte; on 2, to
+# 1e-12.
+few=("$src/prm/default_dam_break.prm" --set "Output/Quiet=true" "${dam_break[@]}"
+  --set "Bodies/Body 0/Box upper corner=0.0114, 0.0114" --set "Simulation/Number of threads=1"
+  --set "Output/Checkpoint interval=1" --set "Output/Output interval=0")
+mpi_launch 3 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" \
+  --set "Output/Directory=few.full" >/dev/null
+mpi_launch 3 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=200" \
+  --set "Output/Directory=few.3" >/dev/null
+cp -r few.3 few.2
+has_empty_rows() {
+  /usr/bin/python3 - "$(ls "$1"/checkpoints/checkpoint_*.h5 | tail -1)" <<'PY'
+import sys, h5py
+rows = list(h5py.File(sys.argv[1], "r")["checkpoint.rows_per_process"])
+sys.exit(0 if len(rows) == 3 and 0 in rows and sum(rows) > 0 else 1)
+PY
+}
+check "MPI: a process without points wrote no rows of the checkpoint" has_empty_rows few.3
+mpi_launch 3 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" --restart few.3 >/dev/null
+check "MPI: ... and the run continues on 3 processes byte for byte" cmp -s few.full/monitors.csv few.3/monitors.csv
+mpi_launch 2 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" --restart few.2 >/dev/null
+check "MPI: ... and on 2 processes" /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
+  few.full/monitors.csv few.2/monitors.csv --rtol 1e-12
+
+# The killed serial dam break, continued on 2 processes from its older
+# checkpoint: its files after that checkpoint (particles_N.vtu) go, so no
+# step is there twice (a .vtu beside a .pvtu), and every piece is named by
+# its record.
+rm "$(ls dam_break.interrupted/checkpoints/checkpoint_*.h5 | tail -1)"
+"${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
+  --set "Output/Checkpoint interval=0.01" --set "Output/Output interval=0.01" \
+  --set "Simulation/Number of threads=1" "${dam_break[@]}" \
+  --set "Simulation/End time=0.03" --restart dam_break.interrupted >/dev/null
+check "MPI: a killed serial run continues on 2 processes" \
+  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
+  dam_break.full/monitors.csv dam_break.interrupted/monitors.csv --rtol 1e-12
+each_step_once() {
+  local f stem n_pvtu=0
+  for f in "$1"/particles_*.pvtu; do
+    [ -f "${f%.pvtu}.vtu" ] && return 1
+    n_pvtu=$((n_pvtu + 1))
+  done
+  for f in "$1"/particles_*.*.vtu; do
+    stem=$(basename "${f%.*.vtu}")
+    grep -q "Source=\"$(basename "$f")\"" "$1/$stem.pvtu" || return 1
+  done
+  [ $n_pvtu -gt 0 ]
+}
+check "MPI: after it, each step's points are in one file set" each_step_once dam_break.interrupted
+check "MPI: after it, the series names existing files" pvd_files_exist dam_break.interrupted
 launch=("$exe")
 
 # Bad restarts.

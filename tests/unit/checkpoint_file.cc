@@ -149,8 +149,8 @@ TEST(CheckpointFile, DamagedFilesAreRefused)
 
 // Tables of rows (put_rows: the material points, split over the processes
 // with MPI): a serial reader gets every row back, bit for bit; an unused
-// table (no rows anywhere) is listed empty; tables with other numbers of
-// rows than the first are refused when written.
+// table (no rows anywhere) is listed empty; a table with another number of
+// rows than the first is refused when written, and the partial file goes.
 TEST(CheckpointFile, RowTablesRoundTrip)
 {
   Directory   dir;
@@ -164,11 +164,21 @@ TEST(CheckpointFile, RowTablesRoundTrip)
     out.put_rows("mass", std::vector<double>{0.5, 0.25, 0.125});
     out.put_integer_rows("flag", std::vector<std::uint8_t>{0, 1, 255});
     out.put_tensor_rows("affine", std::vector<Tensor<2, 2>>{});
+    file = out.commit();
+  }
+  {
+    CheckpointWriter bad((dir.path / "c_0000000005").string());
+    bad.put_rows("mass", std::vector<double>{0.5, 0.25, 0.125});
     EXPECT_NE(message_of([&] {
-                out.put_rows("wrong", std::vector<double>{1, 2});
+                bad.put_rows("wrong", std::vector<double>{1, 2});
               }).find("other rows per process"),
               std::string::npos);
-    file = out.commit();
+    // The writer closed and removed its file, and says so if used again.
+    EXPECT_FALSE(std::filesystem::exists(dir.path / "c_0000000005.h5.tmp"));
+    EXPECT_NE(message_of([&] {
+                bad.commit();
+              }).find("failed before"),
+              std::string::npos);
   }
   const CheckpointReader in(file);
   EXPECT_FALSE(in.rows_split());

@@ -90,6 +90,11 @@ namespace fsgmpm
     void
     write_pieces(const std::string &record, const unsigned int n_local);
 
+    /// After a restart: remove the numbered output files past the series
+    /// of @p state (process 0).
+    void
+    remove_files_after(const State &state) const;
+
     Settings            settings;
     bool                parallel, root;
     ParticleOutput<dim> particle_output;
