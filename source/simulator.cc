@@ -207,13 +207,8 @@ namespace fsgmpm
     const std::string others = scene_monitors->not_distributed();
     refuse(others.empty(), "The scene monitor(s) " + others);
 
-    partition = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
-    // Every process filled the same bodies: the counts are global.
-    std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
-    for (const unsigned int c : particles.occupied_cells)
-      points_per_cell[c] = particles.cell_end[c] - particles.cell_begin[c];
-    partition->partition(points_per_cell);
-    DistributedPoints::keep_owned(*partition, particles);
+    // setup_bodies() partitioned the cells and filled this process's.
+    Assert(partition, ExcInternalError());
   }
 
 
@@ -422,19 +417,61 @@ namespace fsgmpm
   void
   Simulator<dim>::setup_bodies()
   {
+    for (auto &body : bodies)
+      if (body.fills_membrane)
+        body.shape
+          = std::make_unique<CrossSectionShape<dim>>(membrane_outline,
+                                                     membrane_z_range.first,
+                                                     membrane_z_range.second);
+    if (Parallel::n_processes(MPI_COMM_WORLD) == 1)
+      fill_bodies(nullptr, nullptr);
+    else
+      {
+        // MPI: no process holds all points. The bodies are filled twice:
+        // first counting the points of each cell (storing none), which
+        // the partition weighs, then storing the points of this process's
+        // cells only. Each point gets the id, and so the place, it has in
+        // a serial run.
+        partition
+          = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
+        std::vector<unsigned int>       points_per_cell(grid->n_cells(), 0);
+        const std::vector<std::uint8_t> none(grid->n_base_cells(), 0);
+        fill_bodies(&none, &points_per_cell);
+        partition->partition(points_per_cell);
+        std::vector<std::uint8_t> mine(grid->n_base_cells());
+        for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
+          mine[c] = partition->owner(c) == partition->rank();
+        particles = ParticleStore<dim>();
+        fill_bodies(&mine, nullptr);
+      }
+    for (auto &body : bodies)
+      {
+        material_options.push_back(body.options);
+        materials.push_back(std::move(body.material));
+      }
+    if (params.use_apic)
+      particles.enable_affine_velocity();
+    particles.sort_by_cell(grid->n_cells());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::fill_bodies(const std::vector<std::uint8_t> *keep_cell,
+                              std::vector<unsigned int>       *points_per_cell)
+  {
     // Bodies fill in order: a body leaves out the regions of those before
     // it, so a water tank listed after a bag surrounds it without a second
     // mass inside.
     std::vector<const BodyShape<dim> *> taken;
+    std::vector<unsigned int>           per_base_cell;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         BodyDescription<dim> &body  = bodies[b];
         const unsigned int    first = particles.size();
-        if (body.fills_membrane)
-          body.shape
-            = std::make_unique<CrossSectionShape<dim>>(membrane_outline,
-                                                       membrane_z_range.first,
-                                                       membrane_z_range.second);
+        if (points_per_cell)
+          per_base_cell.assign(grid->n_base_cells(), 0);
         fill_body(*grid,
                   *body.shape,
                   body.particles_per_cell,
@@ -443,7 +480,13 @@ namespace fsgmpm
                   b,
                   b,
                   particles,
-                  taken);
+                  taken,
+                  keep_cell,
+                  points_per_cell ? &per_base_cell : nullptr);
+        if (points_per_cell)
+          for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
+            (*points_per_cell)[grid->cell_in_field(c, body.velocity_field)]
+              += per_base_cell[c];
         for (unsigned int p = first; p < particles.size(); ++p)
           particles.cell[p]
             = grid->cell_in_field(particles.cell[p], body.velocity_field);
@@ -483,12 +526,7 @@ namespace fsgmpm
                     * body.material->volume_ratio_for_pressure(-syy);
               }
           }
-        material_options.push_back(body.options);
-        materials.push_back(std::move(body.material));
       }
-    if (params.use_apic)
-      particles.enable_affine_velocity();
-    particles.sort_by_cell(grid->n_cells());
   }
 
 

@@ -219,8 +219,16 @@ namespace fsgmpm
   private:
     void
     setup_membrane(ParameterHandler &prm, const Point<dim> &cell_size);
+    /// Fill the bodies; with MPI, partition the cells by the points of
+    /// each and keep this process's points.
     void
     setup_bodies();
+    /// Fill every body in order (fill_body(): @p keep_cell, one flag per
+    /// base cell, and @p points_per_cell, per cell of every velocity field),
+    /// with their initial stresses.
+    void
+    fill_bodies(const std::vector<std::uint8_t> *keep_cell,
+                std::vector<unsigned int>       *points_per_cell);
     void
     compute_monitors();
     /// (flagged, detecting) points from Stages::detect_free_surface.
@@ -244,8 +252,8 @@ namespace fsgmpm
     load_checkpoint(const CheckpointReader &in);
     Tensor<1, dim>
     current_gravity() const;
-    /// MPI: split the cells over the processes (weighted by the points)
-    /// and keep this process's points; refuses what is not distributed yet.
+    /// MPI: refuses what is not distributed yet (setup_bodies() split the
+    /// cells over the processes).
     void
     setup_partition();
     /// (flagged, detecting) free-surface points over all processes, counted

@@ -107,8 +107,15 @@ namespace fsgmpm
             const std::uint16_t                        material_id,
             const std::uint16_t                        body_id,
             ParticleStore<dim>                        &particles,
-            const std::vector<const BodyShape<dim> *> &taken)
+            const std::vector<const BodyShape<dim> *> &taken,
+            const std::vector<std::uint8_t>           *keep_cell,
+            std::vector<unsigned int>                 *points_per_base_cell)
   {
+    Assert(!keep_cell || keep_cell->size() == grid.n_base_cells(),
+           ExcInternalError());
+    Assert(!points_per_base_cell
+             || points_per_base_cell->size() == grid.n_base_cells(),
+           ExcInternalError());
     const std::string body_name
       = "Body " + std::to_string(body_id) + " (" + shape.description()
         + (shape.parameters.empty() ? "" : ", from " + shape.parameters);
@@ -147,14 +154,19 @@ namespace fsgmpm
                 ++overlapped;
                 continue;
               }
-            particles.add(x,
-                          c,
-                          density * v,
-                          v,
-                          initial_velocity,
-                          SymmetricTensor<2, 3>(),
-                          material_id,
-                          body_id);
+            if (!keep_cell || (*keep_cell)[c])
+              particles.add(x,
+                            c,
+                            density * v,
+                            v,
+                            initial_velocity,
+                            SymmetricTensor<2, 3>(),
+                            material_id,
+                            body_id);
+            else
+              ++particles.next_id; // the id this point has in a serial run
+            if (points_per_base_cell)
+              ++(*points_per_base_cell)[c];
             ++added;
           }
       }
@@ -215,7 +227,9 @@ namespace fsgmpm
                const std::uint16_t,
                const std::uint16_t,
                ParticleStore<2> &,
-               const std::vector<const BodyShape<2> *> &);
+               const std::vector<const BodyShape<2> *> &,
+               const std::vector<std::uint8_t> *,
+               std::vector<unsigned int> *);
   template double
   surface_height_above<2>(const BodyShape<2> &,
                           const Point<2> &,
@@ -237,5 +251,7 @@ namespace fsgmpm
                const std::uint16_t,
                const std::uint16_t,
                ParticleStore<3> &,
-               const std::vector<const BodyShape<3> *> &);
+               const std::vector<const BodyShape<3> *> &,
+               const std::vector<std::uint8_t> *,
+               std::vector<unsigned int> *);
 } // namespace fsgmpm

@@ -15,7 +15,12 @@
 // bisection tolerance), sigma_xx = sigma_zz = K0 sigma_yy; before, one
 // y_top (the highest outline point) set every point's depth, which is
 // asserted to differ here by up to the slope's height.
+// (4) With MPI a process fills only its own cells (fill_body's keep_cell):
+// it stores exactly the serial fill's points of those cells, with their
+// serial ids, positions and masses, in the serial order; the count of
+// points per cell (which the partition weighs) is the serial one.
 
+#include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
@@ -199,4 +204,49 @@ subsection Bodies
       EXPECT_LT(error, 1e-3) << shape;
       EXPECT_GT(old_rule_error, 0.1 * rho * g * 0.25) << shape;
     }
+}
+
+TEST(BodyFill, AProcessStoresItsOwnCellsPointsWithTheirSerialIds)
+{
+  const auto         grid = test_tools::make_unit_box_grid<2>(8);
+  const BoxShape<2>  bag(Point<2>(0.2, 0.1), Point<2>(0.5, 0.4));
+  const BoxShape<2>  tank(Point<2>(0, 0), Point<2>(1, 0.75));
+  const unsigned int n_cells = grid->n_base_cells();
+
+  ParticleStore<2> all;
+  fill_body(*grid, bag, 4, 2000., Tensor<1, 2>(), 0, 0, all);
+  fill_body(*grid, tank, 4, 1000., Tensor<1, 2>(), 1, 1, all, {&bag});
+
+  // This "process" owns every third cell.
+  std::vector<std::uint8_t> keep(n_cells);
+  for (unsigned int c = 0; c < n_cells; ++c)
+    keep[c] = (c % 3 == 1);
+  ParticleStore<2>          own;
+  std::vector<unsigned int> counts(n_cells, 0);
+  const unsigned int        n_bag = fill_body(
+    *grid, bag, 4, 2000., Tensor<1, 2>(), 0, 0, own, {}, &keep, &counts);
+  const unsigned int n_tank = fill_body(
+    *grid, tank, 4, 1000., Tensor<1, 2>(), 1, 1, own, {&bag}, &keep, &counts);
+  EXPECT_EQ(n_bag + n_tank, all.size());
+  EXPECT_EQ(own.next_id, all.next_id);
+  EXPECT_GT(own.size(), 0u);
+  EXPECT_LT(own.size(), all.size());
+
+  std::vector<unsigned int> serial_counts(n_cells, 0);
+  unsigned int              q = 0;
+  for (unsigned int p = 0; p < all.size(); ++p)
+    {
+      ++serial_counts[all.cell[p]];
+      if (!keep[all.cell[p]])
+        continue;
+      ASSERT_LT(q, own.size());
+      EXPECT_EQ(own.id[q], all.id[p]);
+      EXPECT_EQ(own.cell[q], all.cell[p]);
+      EXPECT_EQ(own.position[q], all.position[p]);
+      EXPECT_EQ(own.mass[q], all.mass[p]);
+      EXPECT_EQ(own.body_id[q], all.body_id[p]);
+      ++q;
+    }
+  EXPECT_EQ(q, own.size());
+  EXPECT_EQ(counts, serial_counts);
 }

@@ -16,7 +16,7 @@ namespace fsgmpm
   {
     /**
      * Keep only the points of cells this process owns (after every
-     * process filled the same bodies, or after a repartition).
+     * process read all points of a checkpoint of an older version).
      */
     template <int dim>
     void

@@ -27,7 +27,15 @@ namespace fsgmpm
    * it lies inside one of the shapes in @p taken (the regions of bodies
    * filled before: bodies fill in order, so a water tank around a bag does
    * not put a second mass where the bag is). Throws if the shape reaches
-   * outside the mesh or holds no point. Returns the number of points added.
+   * outside the mesh or holds no point. Returns the number of points of
+   * the body.
+   *
+   * With MPI a process stores only the points of its own cells: with
+   * @p keep_cell (one flag per base cell), the points of the other cells
+   * are not stored, but take their ids (particles.next_id advances), so
+   * that every point has the id of a serial run's fill. With
+   * @p points_per_base_cell the body's points of each base cell are added
+   * to it, stored or not.
    */
   template <int dim>
   unsigned int
@@ -39,7 +47,9 @@ namespace fsgmpm
             const std::uint16_t                        material_id,
             const std::uint16_t                        body_id,
             ParticleStore<dim>                        &particles,
-            const std::vector<const BodyShape<dim> *> &taken = {});
+            const std::vector<const BodyShape<dim> *> &taken     = {},
+            const std::vector<std::uint8_t>           *keep_cell = nullptr,
+            std::vector<unsigned int> *points_per_base_cell      = nullptr);
 
   /**
    * Height of the surface of @p shape above the inside point @p x: the
