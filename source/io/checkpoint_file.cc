@@ -270,19 +270,12 @@ namespace fsgmpm
                               const unsigned int         columns)
   {
     Assert(columns > 0 && local.size() % columns == 0, ExcInternalError());
-    const unsigned long long  n_local = local.size();
-    unsigned long long        offset = 0, total = n_local;
+    const auto [offset, total]
+      = Parallel::offset_and_total(local.size(), communicator);
     std::vector<unsigned int> rows{
-      static_cast<unsigned int>(n_local / columns)};
+      static_cast<unsigned int>(local.size() / columns)};
     if (parallel)
-      {
-        MPI_Exscan(
-          &n_local, &offset, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, communicator);
-        if (root)
-          offset = 0; // MPI_Exscan leaves process 0's result undefined
-        total = Utilities::MPI::sum(n_local, communicator);
-        rows  = Utilities::MPI::all_gather(communicator, rows[0]);
-      }
+      rows = Utilities::MPI::all_gather(communicator, rows[0]);
     // Every table has the same rows on each process (or none at all).
     if (total > 0)
       {

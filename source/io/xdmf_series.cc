@@ -108,15 +108,8 @@ namespace fsgmpm
                            "written by process 0)."));
     // This process's vertices are rows [offset, offset + n) of the file's.
     const unsigned long long n_local = positions.size() / 3;
-    unsigned long long       offset = 0, total = n_local;
-    if (parallel)
-      {
-        MPI_Exscan(
-          &n_local, &offset, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, communicator);
-        if (root)
-          offset = 0; // MPI_Exscan leaves process 0's result undefined
-        total = Utilities::MPI::sum(n_local, communicator);
-      }
+    const auto [offset, total]
+      = Parallel::offset_and_total(n_local, communicator);
     std::vector<unsigned int> cells = connectivity;
     if (type == CellType::vertex && cells.empty())
       for (unsigned long long i = 0; i < n_local; ++i)
