@@ -138,33 +138,32 @@ run_scene geocontainer_mpi "$src/prm/geocontainer_polygon.prm" 0.02 \
 # file; 1 and 3 processes read them back in other shares.
 cp -r dam_break_mpi.full dam_break.mpi_to_serial
 cp -r dam_break_mpi.full dam_break.mpi_to_3
-"${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
-  --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
-  --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
-  --set "Simulation/End time=0.04" --restart dam_break_mpi.full >/dev/null
+# restart_dam_break <dir> <end time> <launcher...>: the coarse dam break
+# continued from the newest checkpoint in <dir>.
+restart_dam_break() {
+  local dir=$1 end=$2
+  shift 2
+  "$@" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
+    --set "Output/Checkpoint interval=0.01" --set "Output/Output interval=0.01" \
+    --set "Simulation/Number of threads=1" --set "Simulation/Repartition imbalance=1.03" \
+    "${dam_break[@]}" --set "Simulation/End time=$end" --restart "$dir" >/dev/null
+}
+same_monitors() {
+  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" "$1/monitors.csv" "$2/monitors.csv" --rtol 1e-12
+}
+restart_dam_break dam_break_mpi.full 0.04 "${launch[@]}"
 check "MPI: a 2-process run continues on 2 processes to a later end time" \
   grep -q '"termination": "end_time"' dam_break_mpi.full/summary.json
 cp -r dam_break.full dam_break.serial_to_mpi
-"${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
-  --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
-  --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
-  --set "Simulation/End time=0.04" --restart dam_break.serial_to_mpi >/dev/null
+restart_dam_break dam_break.serial_to_mpi 0.04 "${launch[@]}"
 check "MPI: a serial run's checkpoint continues on 2 processes" \
-  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
-  dam_break_mpi.full/monitors.csv dam_break.serial_to_mpi/monitors.csv --rtol 1e-12
-"$exe" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
-  --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
-  "${dam_break[@]}" --set "Simulation/End time=0.04" --restart dam_break.mpi_to_serial >/dev/null
+  same_monitors dam_break_mpi.full dam_break.serial_to_mpi
+restart_dam_break dam_break.mpi_to_serial 0.04 "$exe"
 check "MPI: a 2-process run's checkpoint continues serially" \
-  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
-  dam_break_mpi.full/monitors.csv dam_break.mpi_to_serial/monitors.csv --rtol 1e-12
-mpi_launch 3 "$exe" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
-  --set "Output/Checkpoint interval=0.01" --set "Simulation/Number of threads=1" \
-  --set "Simulation/Repartition imbalance=1.03" "${dam_break[@]}" \
-  --set "Simulation/End time=0.04" --restart dam_break.mpi_to_3 >/dev/null
+  same_monitors dam_break_mpi.full dam_break.mpi_to_serial
+restart_dam_break dam_break.mpi_to_3 0.04 mpi_launch 3 "$exe"
 check "MPI: a 2-process run's checkpoint continues on 3 processes" \
-  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
-  dam_break_mpi.full/monitors.csv dam_break.mpi_to_3/monitors.csv --rtol 1e-12
+  same_monitors dam_break_mpi.full dam_break.mpi_to_3
 # Its PVD names the serial part's VTU files and the PVTU records after it.
 pvd_files_exist() {
   local f n=0
@@ -199,21 +198,16 @@ check "MPI: a process without points wrote no rows of the checkpoint" has_empty_
 mpi_launch 3 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" --restart few.3 >/dev/null
 check "MPI: ... and the run continues on 3 processes byte for byte" cmp -s few.full/monitors.csv few.3/monitors.csv
 mpi_launch 2 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" --restart few.2 >/dev/null
-check "MPI: ... and on 2 processes" /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
-  few.full/monitors.csv few.2/monitors.csv --rtol 1e-12
+check "MPI: ... and on 2 processes" same_monitors few.full few.2
 
 # The killed serial dam break, continued on 2 processes from its older
 # checkpoint: its files after that checkpoint (particles_N.vtu) go, so no
 # step is there twice (a .vtu beside a .pvtu), and every piece is named by
 # its record.
 rm "$(ls dam_break.interrupted/checkpoints/checkpoint_*.h5 | tail -1)"
-"${launch[@]}" "$src/prm/default_dam_break.prm" --set "Output/Quiet=true" \
-  --set "Output/Checkpoint interval=0.01" --set "Output/Output interval=0.01" \
-  --set "Simulation/Number of threads=1" "${dam_break[@]}" \
-  --set "Simulation/End time=0.03" --restart dam_break.interrupted >/dev/null
+restart_dam_break dam_break.interrupted 0.03 "${launch[@]}"
 check "MPI: a killed serial run continues on 2 processes" \
-  /usr/bin/python3 "$src/tests/golden/compare_monitors.py" \
-  dam_break.full/monitors.csv dam_break.interrupted/monitors.csv --rtol 1e-12
+  same_monitors dam_break.full dam_break.interrupted
 each_step_once() {
   local f stem n_pvtu=0
   for f in "$1"/particles_*.pvtu; do

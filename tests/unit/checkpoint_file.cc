@@ -175,9 +175,7 @@ TEST(CheckpointFile, RowTablesRoundTrip)
               std::string::npos);
     // The writer closed and removed its file, and says so if used again.
     EXPECT_FALSE(std::filesystem::exists(dir.path / "c_0000000005.h5.tmp"));
-    EXPECT_NE(message_of([&] {
-                bad.commit();
-              }).find("failed before"),
+    EXPECT_NE(message_of([&] { bad.commit(); }).find("failed before"),
               std::string::npos);
   }
   const CheckpointReader in(file);
