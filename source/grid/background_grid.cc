@@ -1,6 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/memory_consumption.h>
 
+#include <deal.II/fe/fe_simplex_p.h>
+
 #include <fsgmpm/grid/background_grid.h>
 
 #include <algorithm>
@@ -11,18 +13,23 @@ namespace fsgmpm
 {
   template <int dim>
   BackgroundGrid<dim>::BackgroundGrid(Triangulation<dim> &&tria)
-    : triangulation(std::move(tria))
-    , fe(1)
-    , dof_handler(triangulation)
   {
+    // The mesh lives only as long as this constructor: nothing of the step
+    // asks deal.II's mesh again, and on every MPI process it held more
+    // memory than the grid's own arrays.
+    const Triangulation<dim> triangulation(std::move(tria));
     AssertThrow(triangulation.n_active_cells() > 0,
                 ExcMessage("The background grid has no cells."));
     AssertThrow(triangulation.all_reference_cells_are_simplex(),
                 ExcMessage("The background grid must consist of simplices "
                            "(triangles in 2D, tetrahedra in 3D). Convert "
                            "quadrilateral or hexahedral meshes before use."));
-    dof_handler.distribute_dofs(fe);
-    compute_cell_data();
+    {
+      const FE_SimplexP<dim> fe(1);
+      DoFHandler<dim>        dof_handler(triangulation);
+      dof_handler.distribute_dofs(fe);
+      compute_cell_data(dof_handler);
+    }
     compute_neighbors();
     compute_colouring();
   }
@@ -31,9 +38,9 @@ namespace fsgmpm
 
   template <int dim>
   void
-  BackgroundGrid<dim>::compute_cell_data()
+  BackgroundGrid<dim>::compute_cell_data(const DoFHandler<dim> &dof_handler)
   {
-    const unsigned int n = triangulation.n_active_cells();
+    const unsigned int n = dof_handler.get_triangulation().n_active_cells();
     cell_nodes.resize(n);
     shape_gradients.resize(n);
     cell_volume.resize(n);
@@ -296,9 +303,7 @@ namespace fsgmpm
            + MemoryConsumption::memory_consumption(cell_neighbors)
            + MemoryConsumption::memory_consumption(face_boundary_id)
            + MemoryConsumption::memory_consumption(cell_block)
-           + MemoryConsumption::memory_consumption(block_colour)
-           + triangulation.memory_consumption()
-           + dof_handler.memory_consumption();
+           + MemoryConsumption::memory_consumption(block_colour);
   }
 
 

@@ -1,4 +1,3 @@
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -43,13 +42,23 @@ namespace fsgmpm
             std::vector<unsigned int> weights(n_base, 1);
             for (unsigned int c = 0; c < n_cells; ++c)
               weights[c % n_base] += 64 * points_per_cell[c];
-            // What GridTools::partition_triangulation does (the face graph
-            // of the cells, METIS), without the copy of the mesh it would
-            // need to set subdomain ids on: the same partition, and some
-            // 200 MB less on this process at 768 000 triangles.
-            DynamicSparsityPattern connectivity;
-            GridTools::get_face_connectivity_of_cells(grid.get_triangulation(),
-                                                      connectivity);
+            // What GridTools::partition_triangulation does (METIS on the
+            // face graph of the cells), without the copy of the mesh it
+            // would need to set subdomain ids on: the graph is the one
+            // GridTools::get_face_connectivity_of_cells builds (each cell
+            // with itself and its face neighbours, deal.II 9.4
+            // grid_tools.cc:3732-3758), from the grid's own neighbours.
+            DynamicSparsityPattern connectivity(n_base, n_base);
+            for (unsigned int c = 0; c < n_base; ++c)
+              {
+                connectivity.add(c, c);
+                for (const unsigned int neighbor : grid.cell_neighbors[c])
+                  if (neighbor != BackgroundGrid<dim>::invalid)
+                    {
+                      connectivity.add(c, neighbor);
+                      connectivity.add(neighbor, c);
+                    }
+              }
             SparsityPattern graph;
             graph.copy_from(connectivity);
             connectivity.reinit(0, 0);

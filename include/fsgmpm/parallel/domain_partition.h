@@ -18,8 +18,9 @@ namespace fsgmpm
    * Which MPI process owns which cell of the background grid, and the halo
    * that makes every process's nodal values exact.
    *
-   * The cells are split by METIS through deal.II's
-   * GridTools::partition_triangulation, weighted by the points they hold,
+   * The cells are split by METIS on their face graph (as deal.II's
+   * GridTools::partition_triangulation does), weighted by the points they
+   * hold,
    * so work follows the material. A process holds the points of its own
    * cells and, during a step, copies ("ghosts") of the points of every cell
    * that shares a vertex with one of its cells: the same layer that
