@@ -215,7 +215,7 @@ namespace fsgmpm
 
   template <int dim>
   std::pair<unsigned int, unsigned int>
-  Simulator<dim>::count_free_surface() const
+  Simulator<dim>::local_free_surface_counts() const
   {
     // Between steps: no ghost copies are held.
     Assert(particles.ghost.empty(), ExcInternalError());
@@ -226,6 +226,16 @@ namespace fsgmpm
           n.first += particles.free_surface[p];
           ++n.second;
         }
+    return n;
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  Simulator<dim>::count_free_surface() const
+  {
+    const auto      n    = local_free_surface_counts();
     const MPI_Comm &comm = partition->get_communicator();
     return {Utilities::MPI::sum(n.first, comm),
             Utilities::MPI::sum(n.second, comm)};
@@ -245,13 +255,11 @@ namespace fsgmpm
 
   template <int dim>
   void
-  Simulator<dim>::rebalance()
+  Simulator<dim>::rebalance(const Utilities::MPI::MinMaxAvg &point_counts)
   {
-    const MPI_Comm &comm    = partition->get_communicator();
-    const double    n_local = particles.size();
-    const double    n_mean
-      = Utilities::MPI::sum(n_local, comm) / partition->n_ranks();
-    imbalance = n_mean > 0 ? Utilities::MPI::max(n_local, comm) / n_mean : 1.;
+    const MPI_Comm &comm   = partition->get_communicator();
+    const double    n_mean = point_counts.sum / partition->n_ranks();
+    imbalance              = n_mean > 0 ? point_counts.max / n_mean : 1.;
     if (params.repartition_imbalance == 0
         || imbalance <= params.repartition_imbalance)
       return;
@@ -614,7 +622,15 @@ namespace fsgmpm
         += std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
-    const unsigned int n_before = n_global_particles();
+    // MPI: the points over all processes and the most any process holds,
+    // in one collective (deal.II's min_max_avg; exact for counts).
+    Utilities::MPI::MinMaxAvg point_counts;
+    if (partition)
+      point_counts = Utilities::MPI::min_max_avg(double(particles.size()),
+                                                 partition->get_communicator());
+    const unsigned int n_before
+      = partition ? static_cast<unsigned int>(point_counts.sum)
+                  : particles.size();
     if (n_before == 0)
       {
         termination = Termination::error;
@@ -629,14 +645,12 @@ namespace fsgmpm
     // every process still has exact nodal values around its points.
     if (partition)
       timed(mpi_points_stage, [&] {
-        rebalance();
+        rebalance(point_counts);
         const unsigned int n_owned = particles.size();
         DistributedPoints::add_ghosts(*partition, particles);
+        // This process's; write_summary() takes the largest.
         halo_fraction
-          = Utilities::MPI::max(n_owned > 0
-                                  ? double(particles.size() - n_owned) / n_owned
-                                  : 0.,
-                                partition->get_communicator());
+          = n_owned > 0 ? double(particles.size() - n_owned) / n_owned : 0.;
       });
     // P2G first: the membrane's nodal time-step bound needs the nodal
     // masses (p2g does not depend on dt).
@@ -659,27 +673,33 @@ namespace fsgmpm
       {
         timed(mpi_points_stage,
               [&] { DistributedPoints::migrate(*partition, particles); });
-        const MPI_Comm &comm  = partition->get_communicator();
-        result.lost_particles = n_before - n_global_particles();
-        result.free_surface   = count_free_surface();
+        const MPI_Comm &comm = partition->get_communicator();
         result.displacement_ratio
           = Utilities::MPI::max(std::isfinite(result.displacement_ratio)
                                   ? result.displacement_ratio
                                   : std::numeric_limits<double>::infinity(),
                                 comm);
         // Each process's node sums and their rounding corrections, added
-        // over the processes separately (sum_over_processes()).
-        Stages::GridUpdateResult &g = result.grid;
+        // over the processes separately (sum_over_processes()), and in the
+        // same collective the point counts (exact: integers in doubles).
+        Stages::GridUpdateResult &g    = result.grid;
+        const auto                free = local_free_surface_counts();
         const std::vector<double> total
           = sum_over_processes({g.external_work_increment,
                                 g.damping_work_increment,
                                 g.unbalanced_norm_sq,
-                                g.external_norm_sq},
+                                g.external_norm_sq,
+                                CompensatedSum(particles.size()),
+                                CompensatedSum(free.first),
+                                CompensatedSum(free.second)},
                                comm);
         g.external_work_increment = CompensatedSum(total[0]);
         g.damping_work_increment  = CompensatedSum(total[1]);
         g.unbalanced_norm_sq      = CompensatedSum(total[2]);
         g.external_norm_sq        = CompensatedSum(total[3]);
+        result.lost_particles = n_before - static_cast<unsigned int>(total[4]);
+        result.free_surface   = {static_cast<unsigned int>(total[5]),
+                                 static_cast<unsigned int>(total[6])};
       }
     set_free_surface_fraction(result.free_surface);
     if (result.membrane_nodes_outside > 0)
@@ -939,12 +959,15 @@ namespace fsgmpm
     const unsigned int n_points = n_global_particles();
     double             bytes    = particles.bytes_per_particle();
     // What the processes really hold at their peak (the point store, the
-    // grid and its deal.II mesh, the libraries): VmHWM.
+    // grid, the libraries): VmHWM.
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     double peak_resident = 1024. * memory.VmHWM, total_resident = peak_resident;
+    double largest_halo_fraction = halo_fraction;
     if (partition)
       {
+        largest_halo_fraction
+          = Utilities::MPI::max(halo_fraction, partition->get_communicator());
         bytes = Utilities::MPI::max(bytes, partition->get_communicator());
         peak_resident
           = Utilities::MPI::max(peak_resident, partition->get_communicator());
@@ -971,7 +994,7 @@ namespace fsgmpm
          {"mpi_ranks", std::to_string(partition ? partition->n_ranks() : 1)},
          {"mpi_repartitions", std::to_string(n_repartitions)},
          {"mpi_imbalance", json_number(imbalance)},
-         {"mpi_halo_fraction", json_number(halo_fraction)},
+         {"mpi_halo_fraction", json_number(largest_halo_fraction)},
          {"lost_particles", std::to_string(monitors.lost_particles)},
          {"dt_min", json_number(time_step_control.dt_min())},
          {"dt_max", json_number(time_step_control.dt_max())},

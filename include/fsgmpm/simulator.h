@@ -256,6 +256,10 @@ namespace fsgmpm
     /// cells over the processes).
     void
     setup_partition();
+    /// (flagged, detecting) free-surface points of this process's own
+    /// points.
+    std::pair<unsigned int, unsigned int>
+    local_free_surface_counts() const;
     /// (flagged, detecting) free-surface points over all processes, counted
     /// on the points each process owns.
     std::pair<unsigned int, unsigned int>
@@ -267,8 +271,9 @@ namespace fsgmpm
     /// (Simulation/Repartition imbalance) and move the points to their new
     /// owners. At the start of a step (no ghosts held; the output between
     /// steps needs the partition the nodal values were computed with).
+    /// @p point_counts: the points per process (sum and maximum).
     void
-    rebalance();
+    rebalance(const Utilities::MPI::MinMaxAvg &point_counts);
 
     Parameters<dim>                        params;
     std::vector<BodyDescription<dim>>      bodies;
@@ -303,8 +308,9 @@ namespace fsgmpm
     std::unique_ptr<DomainPartition<dim>> partition;
     bool                                  root = true;
     /// MPI statistics for summary.json: repartitions so far, the ghost
-    /// points of the last step (largest ratio to the owned points over the
-    /// processes) and the last max/mean points per process.
+    /// points of the last step (this process's ratio to its owned points;
+    /// write_summary() takes the largest) and the last max/mean points per
+    /// process.
     unsigned int n_repartitions = 0;
     double       halo_fraction = 0, imbalance = 1;
     /// Wall seconds of the run-control stages, and of all stages before a

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iterator>
+#include <limits>
 #include <map>
 
 namespace fsgmpm
@@ -82,6 +83,68 @@ namespace fsgmpm
               particles.ghost.push_back(ghost);
           }
       }
+
+      /**
+       * Send each point neighbour its buffer of @p send (an empty message
+       * where there is none) and receive one message from each: both sides
+       * know whom to expect, so there is no collective (deal.II's
+       * some_to_some() finds the senders with a consensus algorithm: an
+       * all-reduce, two barriers and a non-blocking one per call). Returns
+       * the non-empty buffers received, by rank.
+       */
+      std::map<unsigned int, std::vector<char>>
+      exchange_with_neighbours(
+        const std::vector<unsigned int>                 &neighbours,
+        const std::map<unsigned int, std::vector<char>> &send,
+        const MPI_Comm                                  &comm,
+        const int                                        tag)
+      {
+        static const std::vector<char> nothing;
+        for ([[maybe_unused]] const auto &[rank, buffer] : send)
+          Assert(std::binary_search(neighbours.begin(), neighbours.end(), rank),
+                 ExcInternalError());
+        std::vector<MPI_Request> requests(neighbours.size());
+        for (unsigned int k = 0; k < neighbours.size(); ++k)
+          {
+            const auto  it     = send.find(neighbours[k]);
+            const auto &buffer = (it == send.end()) ? nothing : it->second;
+            AssertThrow(buffer.size() <= std::numeric_limits<int>::max(),
+                        ExcMessage(
+                          "More than 2 GB of points to send to one "
+                          "process in one step: run on more processes."));
+            const int ierr = MPI_Isend(buffer.data(),
+                                       static_cast<int>(buffer.size()),
+                                       MPI_BYTE,
+                                       neighbours[k],
+                                       tag,
+                                       comm,
+                                       &requests[k]);
+            AssertThrowMPI(ierr);
+          }
+        std::map<unsigned int, std::vector<char>> received;
+        for (const unsigned int q : neighbours)
+          {
+            MPI_Status status;
+            int        ierr = MPI_Probe(q, tag, comm, &status);
+            AssertThrowMPI(ierr);
+            int n = 0;
+            ierr  = MPI_Get_count(&status, MPI_BYTE, &n);
+            AssertThrowMPI(ierr);
+            std::vector<char> buffer(n);
+            ierr = MPI_Recv(
+              buffer.data(), n, MPI_BYTE, q, tag, comm, MPI_STATUS_IGNORE);
+            AssertThrowMPI(ierr);
+            if (n > 0)
+              received.emplace(q, std::move(buffer));
+          }
+        const int ierr
+          = MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+        AssertThrowMPI(ierr);
+        return received;
+      }
+
+      // Tags of the two exchanges (DomainPartition's node values use 1507).
+      constexpr int ghost_tag = 1508, migration_tag = 1509;
     } // namespace
 
 
@@ -118,8 +181,12 @@ namespace fsgmpm
                  ++p)
               pack(particles, p, buffer);
           }
+      // Every ghost holder of our cells is a point neighbour.
       const auto received
-        = Utilities::MPI::some_to_some(partition.get_communicator(), send);
+        = exchange_with_neighbours(partition.point_neighbours(),
+                                   send,
+                                   partition.get_communicator(),
+                                   ghost_tag);
       if (received.empty())
         return;
       // Append the copies without sorting: a ghost cell has one owner,
@@ -208,17 +275,35 @@ namespace fsgmpm
         return;
       // After the step: MpmStep::advance cut the ghost copies off.
       Assert(particles.ghost.empty(), ExcInternalError());
-      std::map<unsigned int, std::vector<char>> send;
+      const auto &neighbours = partition.point_neighbours();
+      std::map<unsigned int, std::vector<char>> near, far;
       std::vector<std::uint8_t>                 flag(particles.size(), 0);
       bool                                      leaving = false;
       for (unsigned int p = 0; p < particles.size(); ++p)
-        if (partition.owner(particles.cell[p]) != partition.rank())
+        {
+          const unsigned int q = partition.owner(particles.cell[p]);
+          if (q != partition.rank())
+            {
+              const bool neighbour
+                = std::binary_search(neighbours.begin(), neighbours.end(), q);
+              pack(particles, p, (neighbour ? near : far)[q]);
+              flag[p] = leaving = true;
+            }
+        }
+      // A step moves a point less than its cell's smallest altitude, so
+      // into a cell around its old one (whose owner is a neighbour) but
+      // for slivers; after a repartition or a restart on another number of
+      // processes the new owner may be anyone. Those go the collective way,
+      // when some process has any.
+      const MPI_Comm &comm = partition.get_communicator();
+      auto            received
+        = exchange_with_neighbours(neighbours, near, comm, migration_tag);
+      if (Utilities::MPI::max(far.empty() ? 0u : 1u, comm) > 0)
+        for (auto &[rank, buffer] : Utilities::MPI::some_to_some(comm, far))
           {
-            pack(particles, p, send[partition.owner(particles.cell[p])]);
-            flag[p] = leaving = true;
+            std::vector<char> &all = received[rank];
+            all.insert(all.end(), buffer.begin(), buffer.end());
           }
-      const auto received
-        = Utilities::MPI::some_to_some(partition.get_communicator(), send);
       if (leaving)
         particles.remove_flagged(flag);
       for (const auto &[rank, buffer] : received)

@@ -127,6 +127,20 @@ namespace fsgmpm
         ranks.erase(std::find(ranks.begin(), ranks.end(), cell_owner[c]));
         ghost_ranks[c] = ranks;
       }
+    // The processes whose cells share a vertex with ours: those that hold
+    // our cells as ghosts, and whose cells we hold (the relation is
+    // symmetric). Ghost copies go only to them, and so do nearly all
+    // migrating points.
+    point_neighbour_ranks.clear();
+    for (unsigned int c = 0; c < n_cells; ++c)
+      if (cell_owner[c] == this_process)
+        point_neighbour_ranks.insert(point_neighbour_ranks.end(),
+                                     ghost_ranks[c].begin(),
+                                     ghost_ranks[c].end());
+    std::sort(point_neighbour_ranks.begin(), point_neighbour_ranks.end());
+    point_neighbour_ranks.erase(std::unique(point_neighbour_ranks.begin(),
+                                            point_neighbour_ranks.end()),
+                                point_neighbour_ranks.end());
 
     // Node i is exact on every process owning a cell around it (set A);
     // the processes that hold a cell around it only as a ghost (set R)

@@ -9,13 +9,14 @@ namespace fsgmpm
   {
     template <int dim>
     GridUpdateResult
-    grid_update(const NodalConstraints<dim>         &constraints,
-                const Tensor<1, dim>                &gravity,
-                const double                         alpha,
-                const double                         dt,
-                NodalFields<dim>                    &nodes,
-                const std::vector<std::uint8_t>     *counted_nodes,
-                const std::function<double(double)> &sum_over_processes)
+    grid_update(
+      const NodalConstraints<dim>                      &constraints,
+      const Tensor<1, dim>                             &gravity,
+      const double                                      alpha,
+      const double                                      dt,
+      NodalFields<dim>                                 &nodes,
+      const std::vector<std::uint8_t>                  *counted_nodes,
+      const std::function<void(std::vector<double> &)> &sum_over_processes)
     {
       GridUpdateResult r;
       // The damping work is booked on the nodes that carry a share of the
@@ -39,9 +40,12 @@ namespace fsgmpm
               }
           if (sum_over_processes)
             {
-              mean_mass = sum_over_processes(total_mass.sum())
-                          + sum_over_processes(total_mass.correction());
-              n_nodes = sum_over_processes(n_nodes);
+              // One collective for the three numbers.
+              std::vector<double> sums
+                = {total_mass.sum(), total_mass.correction(), n_nodes};
+              sum_over_processes(sums);
+              mean_mass = sums[0] + sums[1];
+              n_nodes   = sums[2];
             }
           else
             mean_mass = total_mass.value();
@@ -113,7 +117,7 @@ namespace fsgmpm
                    const double,
                    NodalFields<2> &,
                    const std::vector<std::uint8_t> *,
-                   const std::function<double(double)> &);
+                   const std::function<void(std::vector<double> &)> &);
     template GridUpdateResult
     grid_update<3>(const NodalConstraints<3> &,
                    const Tensor<1, 3> &,
@@ -121,6 +125,6 @@ namespace fsgmpm
                    const double,
                    NodalFields<3> &,
                    const std::vector<std::uint8_t> *,
-                   const std::function<double(double)> &);
+                   const std::function<void(std::vector<double> &)> &);
   } // namespace Stages
 } // namespace fsgmpm

@@ -207,10 +207,14 @@ namespace fsgmpm
         dt,
         nodes,
         partition ? &partition->counted_nodes() : nullptr,
-        [this](const double x) {
-          return partition
-                   ? Utilities::MPI::sum(x, partition->get_communicator())
-                   : x;
+        [this](std::vector<double> &x) {
+          if (partition != nullptr)
+            {
+              const std::vector<double> local = x;
+              Utilities::MPI::sum(make_array_view(local),
+                                  partition->get_communicator(),
+                                  make_array_view(x));
+            }
         });
       // The contact's dissipation is not booked as damping work: the nodal
       // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s

@@ -25,7 +25,8 @@ namespace fsgmpm
 
     /**
      * Send copies of this process's points to the processes that hold
-     * their cells as ghost cells, and receive theirs (flagged in
+     * their cells as ghost cells (point to point, no collective), and
+     * receive theirs (flagged in
      * particles.ghost). The copies are appended cell by cell, not sorted
      * in: the cell ranges and occupied_cells include them, which is all
      * the stages read (relocate sorts everything again).
@@ -46,9 +47,13 @@ namespace fsgmpm
     drop_ghosts(ParticleStore<dim> &particles);
 
     /**
-     * After a step: drop the ghost copies (if still held), send the points that
-     * moved into another process's cells to it with their whole state, and
-     * receive those that moved into ours. Sorted afterwards.
+     * After a step (or a new partition): send the points that moved into
+     * another process's cells to it with their whole state, and receive
+     * those that moved into ours. Sorted afterwards. Points go to the
+     * point neighbours (DomainPartition::point_neighbours()) point to
+     * point, with one all-reduce to find out whether any process has
+     * points for others (after a repartition), which then go through
+     * Utilities::MPI::some_to_some().
      */
     template <int dim>
     void

@@ -100,6 +100,18 @@ namespace fsgmpm
     }
 
     /**
+     * The processes that own a cell sharing a vertex with one of ours,
+     * ascending: they hold our cells as ghost cells and we theirs (a
+     * symmetric relation, so each side knows whom to expect messages
+     * from).
+     */
+    const std::vector<unsigned int> &
+    point_neighbours() const
+    {
+      return point_neighbour_ranks;
+    }
+
+    /**
      * 1 for the nodes whose sums (energies, work, norms) this process adds
      * up: those whose lowest-ranked adjacent owner it is, so that every
      * node is counted once over all processes.
@@ -147,6 +159,7 @@ namespace fsgmpm
     unsigned int                           this_process;
     std::vector<unsigned int>              cell_owner;
     std::vector<std::vector<unsigned int>> ghost_ranks;
+    std::vector<unsigned int>              point_neighbour_ranks;
     std::vector<std::uint8_t>              counted;
 
     /// Per neighbouring process: the rim nodes sent to it and received

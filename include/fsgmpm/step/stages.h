@@ -102,15 +102,18 @@ namespace fsgmpm
     GridUpdateResult
     /// With @p counted_nodes (MPI), the result sums only the nodes marked
     /// 1 there, so that the sums over all processes count each node once,
-    /// and @p sum_over_processes (MPI) adds a number up over the processes
-    /// (the mean nodal mass that decides which nodes book damping work).
-    grid_update(const NodalConstraints<dim>         &constraints,
-                const Tensor<1, dim>                &gravity,
-                const double                         damping_alpha,
-                const double                         dt,
-                NodalFields<dim>                    &nodes,
-                const std::vector<std::uint8_t>     *counted_nodes = nullptr,
-                const std::function<double(double)> &sum_over_processes = {});
+    /// and @p sum_over_processes (MPI) adds numbers up over the processes,
+    /// in place (the mean nodal mass that decides which nodes book damping
+    /// work).
+    grid_update(
+      const NodalConstraints<dim>                      &constraints,
+      const Tensor<1, dim>                             &gravity,
+      const double                                      damping_alpha,
+      const double                                      dt,
+      NodalFields<dim>                                 &nodes,
+      const std::vector<std::uint8_t>                  *counted_nodes = nullptr,
+      const std::function<void(std::vector<double> &)> &sum_over_processes
+      = {});
 
     /// Multi-field contact, part 1 (once per step, after p2g and
     /// MembraneCoupling::p2g): at every node of field 0 the contact normal,

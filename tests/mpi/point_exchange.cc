@@ -1,0 +1,269 @@
+// DistributedPoints on 3 MPI processes (mpirun -np 3): the ghost copies
+// and the migration of points, with their whole state, point to point
+// between the processes whose cells share a vertex, and the collective
+// fallback for a point that lands in the cells of a process that is not
+// one of those (after a repartition, or a jump across a sliver cell).
+//
+// The unit square in 6 x 6 squares (72 triangles) is split in three
+// vertical strips by the x of the cell centres: process 0 owns x < 1/3,
+// process 1 the middle, process 2 x > 2/3. Strips 0 and 2 share no vertex,
+// so they are not point neighbours. Every process puts one point at the
+// centre of each of its cells, with an id, mass, velocity and stress made
+// from the cell's index, so that every field can be checked on arrival.
+
+#include <deal.II/base/mpi.h>
+
+#include <fsgmpm/parallel/distributed_points.h>
+#include <fsgmpm/parallel/domain_partition.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "test_utilities.h"
+
+namespace
+{
+  using namespace fsgmpm;
+
+  constexpr int dim = 2;
+
+  Point<dim>
+  centre(const BackgroundGrid<dim> &grid, const unsigned int c)
+  {
+    return grid.position(c, {{1. / 3, 1. / 3, 1. / 3}});
+  }
+
+  unsigned int
+  strip(const BackgroundGrid<dim> &grid, const unsigned int c)
+  {
+    const double x = centre(grid, c)[0];
+    return x < 1. / 3 ? 0 : (x < 2. / 3 ? 1 : 2);
+  }
+
+  /// The point a process puts into cell c: every field from c.
+  void
+  add_point(const BackgroundGrid<dim> &grid,
+            const unsigned int         c,
+            ParticleStore<dim>        &particles)
+  {
+    particles.next_id = 1000 + c;
+    Tensor<1, dim> velocity;
+    velocity[0] = c;
+    velocity[1] = -0.5 * c;
+    SymmetricTensor<2, 3> stress;
+    stress[0][0] = -double(c);
+    stress[0][1] = 0.25 * c;
+    particles.add(
+      centre(grid, c), c, 1. + c, 2. + c, velocity, stress, c % 3, c % 2);
+  }
+
+  /// Whether point p carries exactly the state add_point() gave the point
+  /// with its id (which may since have moved to another cell).
+  bool
+  intact(const ParticleStore<dim> &particles, const unsigned int p)
+  {
+    const unsigned int c = particles.id[p] - 1000;
+    return particles.mass[p] == 1. + c && particles.volume[p] == 2. + c
+           && particles.reference_volume[p] == 2. + c
+           && particles.velocity[p][0] == double(c)
+           && particles.velocity[p][1] == -0.5 * c
+           && particles.stress[p][0][0] == -double(c)
+           && particles.stress[p][0][1] == 0.25 * c
+           && particles.stress[p][1][1] == 0.
+           && particles.material_id[p] == c % 3
+           && particles.body_id[p] == c % 2;
+  }
+
+  struct ThreeStrips
+  {
+    const MPI_Comm                        comm = MPI_COMM_WORLD;
+    std::unique_ptr<BackgroundGrid<dim>>  grid;
+    std::unique_ptr<DomainPartition<dim>> partition;
+    ParticleStore<dim>                    particles;
+    unsigned int                          rank;
+
+    ThreeStrips()
+    {
+      grid      = test_tools::make_unit_box_grid<dim>(6);
+      partition = std::make_unique<DomainPartition<dim>>(comm, *grid);
+      rank      = Utilities::MPI::this_mpi_process(comm);
+      std::vector<unsigned int> owners(grid->n_cells());
+      for (unsigned int c = 0; c < grid->n_cells(); ++c)
+        owners[c] = strip(*grid, c);
+      partition->set_owners(owners);
+      for (unsigned int c = 0; c < grid->n_cells(); ++c)
+        if (owners[c] == rank)
+          add_point(*grid, c, particles);
+      particles.sort_by_cell(grid->n_cells());
+    }
+  };
+} // namespace
+
+
+
+TEST(PointExchange, NeighboursAreTheProcessesWhoseCellsShareAVertex)
+{
+  ThreeStrips               s;
+  std::vector<unsigned int> expected;
+  if (s.rank == 0)
+    expected = {1};
+  else if (s.rank == 1)
+    expected = {0, 2};
+  else
+    expected = {1};
+  EXPECT_EQ(s.partition->point_neighbours(), expected);
+}
+
+
+
+TEST(PointExchange, GhostCopiesAreThePointsOfTheCellsAroundOursInOrder)
+{
+  ThreeStrips        s;
+  const unsigned int n_owned = s.particles.size();
+  DistributedPoints::add_ghosts(*s.partition, s.particles);
+
+  // The ghost cells: cells of other processes that share a vertex with
+  // one of ours; their points come by rank, then by cell.
+  std::set<unsigned int> our_nodes;
+  for (unsigned int c = 0; c < s.grid->n_cells(); ++c)
+    if (s.partition->owner(c) == s.rank)
+      our_nodes.insert(s.grid->cell_nodes[c].begin(),
+                       s.grid->cell_nodes[c].end());
+  std::vector<std::pair<unsigned int, unsigned int>> expected;
+  for (unsigned int c = 0; c < s.grid->n_cells(); ++c)
+    if (s.partition->owner(c) != s.rank
+        && std::any_of(s.grid->cell_nodes[c].begin(),
+                       s.grid->cell_nodes[c].end(),
+                       [&](const unsigned int i) {
+                         return our_nodes.count(i) == 1;
+                       }))
+      expected.emplace_back(s.partition->owner(c), c);
+  std::sort(expected.begin(), expected.end());
+
+  ASSERT_EQ(s.particles.size(), n_owned + expected.size());
+  for (unsigned int k = 0; k < expected.size(); ++k)
+    {
+      const unsigned int p = n_owned + k;
+      EXPECT_EQ(s.particles.cell[p], expected[k].second);
+      EXPECT_EQ(s.particles.id[p], 1000 + expected[k].second);
+      EXPECT_EQ(s.particles.ghost[p], 1);
+      EXPECT_TRUE(intact(s.particles, p)) << "point " << s.particles.id[p];
+      EXPECT_EQ(s.particles.cell_begin[s.particles.cell[p]], p);
+      EXPECT_EQ(s.particles.cell_end[s.particles.cell[p]], p + 1);
+    }
+  EXPECT_TRUE(std::is_sorted(s.particles.occupied_cells.begin(),
+                             s.particles.occupied_cells.end()));
+  EXPECT_EQ(s.particles.occupied_cells.size(), s.particles.size());
+
+  DistributedPoints::drop_ghosts(s.particles);
+  EXPECT_EQ(s.particles.size(), n_owned);
+  EXPECT_EQ(s.particles.occupied_cells.size(), n_owned);
+}
+
+
+
+TEST(PointExchange, PointsMoveToTheirNewOwnersNearAndFar)
+{
+  ThreeStrips s;
+  // Process 0 moves its first point into the first cell of process 2 (not
+  // a neighbour: the collective fallback) and its second into the first
+  // cell of process 1 (a neighbour). Process 2 moves its last point into
+  // process 1's last cell.
+  const auto first_of = [&](const unsigned int owner) {
+    for (unsigned int c = 0; c < s.grid->n_cells(); ++c)
+      if (s.partition->owner(c) == owner)
+        return c;
+    return BackgroundGrid<dim>::invalid;
+  };
+  const auto last_of = [&](const unsigned int owner) {
+    unsigned int last = BackgroundGrid<dim>::invalid;
+    for (unsigned int c = 0; c < s.grid->n_cells(); ++c)
+      if (s.partition->owner(c) == owner)
+        last = c;
+    return last;
+  };
+  const unsigned int n_global
+    = DistributedPoints::global_size(*s.partition, s.particles);
+  const auto move = [&](const unsigned int p, const unsigned int c) {
+    s.particles.cell[p]     = c;
+    s.particles.position[p] = centre(*s.grid, c);
+  };
+  std::vector<unsigned int> cells_of_0, cells_of_2;
+  for (unsigned int c = 0; c < s.grid->n_cells(); ++c)
+    if (s.partition->owner(c) == 0)
+      cells_of_0.push_back(c);
+    else if (s.partition->owner(c) == 2)
+      cells_of_2.push_back(c);
+  // Sorted by cell, process 0's first points are in its first cells.
+  const unsigned int far_id  = 1000 + cells_of_0[0];
+  const unsigned int near_id = 1000 + cells_of_0[1];
+  const unsigned int back_id = 1000 + cells_of_2.back();
+  if (s.rank == 0)
+    {
+      EXPECT_EQ(s.particles.id[0], far_id);
+      EXPECT_EQ(s.particles.id[1], near_id);
+      move(0, first_of(2));
+      move(1, first_of(1));
+    }
+  if (s.rank == 2)
+    {
+      EXPECT_EQ(s.particles.id.back(), back_id);
+      move(s.particles.size() - 1, last_of(1));
+    }
+  DistributedPoints::migrate(*s.partition, s.particles);
+
+  EXPECT_EQ(DistributedPoints::global_size(*s.partition, s.particles),
+            n_global);
+  for (unsigned int p = 0; p < s.particles.size(); ++p)
+    {
+      EXPECT_EQ(s.partition->owner(s.particles.cell[p]), s.rank);
+      EXPECT_TRUE(intact(s.particles, p)) << "point " << s.particles.id[p];
+      if (p > 0)
+        {
+          // Sorted by cell, then by id (the canonical order).
+          EXPECT_TRUE(s.particles.cell[p - 1] < s.particles.cell[p]
+                      || (s.particles.cell[p - 1] == s.particles.cell[p]
+                          && s.particles.id[p - 1] < s.particles.id[p]));
+        }
+    }
+  const auto holds = [&](const unsigned int id) {
+    return std::count(s.particles.id.begin(), s.particles.id.end(), id);
+  };
+  if (s.rank == 2)
+    {
+      EXPECT_EQ(holds(far_id), 1);
+      EXPECT_EQ(holds(back_id), 0);
+    }
+  if (s.rank == 1)
+    {
+      EXPECT_EQ(holds(near_id), 1);
+      EXPECT_EQ(holds(back_id), 1);
+      EXPECT_EQ(s.particles.size(),
+                std::count_if(s.particles.cell.begin(),
+                              s.particles.cell.end(),
+                              [&](const unsigned int c) {
+                                return s.partition->owner(c) == 1;
+                              }));
+    }
+  if (s.rank == 0)
+    {
+      EXPECT_EQ(holds(far_id), 0);
+      EXPECT_EQ(holds(near_id), 0);
+    }
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 3,
+              dealii::ExcMessage("Run on 3 processes: mpirun -np 3"));
+  ::testing::InitGoogleTest(&argc, argv);
+  const int failures = RUN_ALL_TESTS();
+  // Every process's failures count.
+  return dealii::Utilities::MPI::max(failures, MPI_COMM_WORLD);
+}
