@@ -17,7 +17,7 @@ namespace fsgmpm
     , n_processes(Utilities::MPI::n_mpi_processes(comm))
     , this_process(Utilities::MPI::this_mpi_process(comm))
     , cell_owner(grid.n_cells(), 0)
-    , ghost_ranks(grid.n_cells())
+    , ghost_start(grid.n_cells() + 1, 0)
     , counted(grid.n_nodes(), 1)
   {}
 
@@ -115,7 +115,10 @@ namespace fsgmpm
 
     // A process holds cell c (owned or ghost) if it owns a cell that shares
     // a vertex with c.
+    // Stored as one list with offsets (most cells have no ghost holder; a
+    // vector per cell cost 24 B per cell on every process).
     std::vector<unsigned int> ranks;
+    ghost_list.clear();
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         ranks.clear();
@@ -125,8 +128,10 @@ namespace fsgmpm
         std::sort(ranks.begin(), ranks.end());
         ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
         ranks.erase(std::find(ranks.begin(), ranks.end(), cell_owner[c]));
-        ghost_ranks[c] = ranks;
+        ghost_list.insert(ghost_list.end(), ranks.begin(), ranks.end());
+        ghost_start[c + 1] = ghost_list.size();
       }
+    ghost_list.shrink_to_fit();
     // The processes whose cells share a vertex with ours: those that hold
     // our cells as ghosts, and whose cells we hold (the relation is
     // symmetric). Ghost copies go only to them, and so do nearly all
@@ -135,8 +140,8 @@ namespace fsgmpm
     for (unsigned int c = 0; c < n_cells; ++c)
       if (cell_owner[c] == this_process)
         point_neighbour_ranks.insert(point_neighbour_ranks.end(),
-                                     ghost_ranks[c].begin(),
-                                     ghost_ranks[c].end());
+                                     ghost_holders(c).begin(),
+                                     ghost_holders(c).end());
     std::sort(point_neighbour_ranks.begin(), point_neighbour_ranks.end());
     point_neighbour_ranks.erase(std::unique(point_neighbour_ranks.begin(),
                                             point_neighbour_ranks.end()),
@@ -157,8 +162,8 @@ namespace fsgmpm
             const unsigned int c = cells[j];
             around.push_back(cell_owner[c]);
             holders.insert(holders.end(),
-                           ghost_ranks[c].begin(),
-                           ghost_ranks[c].end());
+                           ghost_holders(c).begin(),
+                           ghost_holders(c).end());
           }
         if (around.empty())
           continue;

@@ -1,6 +1,7 @@
 #ifndef fsgmpm_parallel_domain_partition_h
 #define fsgmpm_parallel_domain_partition_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/grid/background_grid.h>
@@ -93,10 +94,11 @@ namespace fsgmpm
     }
 
     /// The processes that hold cell c as a ghost cell (not its owner).
-    const std::vector<unsigned int> &
+    ArrayView<const unsigned int>
     ghost_holders(const unsigned int c) const
     {
-      return ghost_ranks[c];
+      return ArrayView<const unsigned int>(ghost_list.data() + ghost_start[c],
+                                           ghost_start[c + 1] - ghost_start[c]);
     }
 
     /**
@@ -153,14 +155,15 @@ namespace fsgmpm
     n_owned_cells() const;
 
   private:
-    MPI_Comm                               comm;
-    const BackgroundGrid<dim>             &grid;
-    unsigned int                           n_processes;
-    unsigned int                           this_process;
-    std::vector<unsigned int>              cell_owner;
-    std::vector<std::vector<unsigned int>> ghost_ranks;
-    std::vector<unsigned int>              point_neighbour_ranks;
-    std::vector<std::uint8_t>              counted;
+    MPI_Comm                   comm;
+    const BackgroundGrid<dim> &grid;
+    unsigned int               n_processes;
+    unsigned int               this_process;
+    std::vector<unsigned int>  cell_owner;
+    /// ghost_holders(c): ghost_list[ghost_start[c]..ghost_start[c + 1]).
+    std::vector<unsigned int> ghost_start, ghost_list;
+    std::vector<unsigned int> point_neighbour_ranks;
+    std::vector<std::uint8_t> counted;
 
     /// Per neighbouring process: the rim nodes sent to it and received
     /// from it, ascending (both sides compute the same lists).
