@@ -141,10 +141,8 @@ namespace fsgmpm
 
     // Every boundary id named in the wall conditions must exist.
     std::set<types::boundary_id> mesh_ids;
-    for (unsigned int c = 0; c < grid->n_cells(); ++c)
-      for (unsigned int k = 0; k < dim + 1; ++k)
-        if (grid->cell_neighbors[c][k] == BackgroundGrid<dim>::invalid)
-          mesh_ids.insert(grid->face_boundary_id[c][k]);
+    for (const auto &face : grid->boundary_faces)
+      mesh_ids.insert(face.boundary_id);
     for (const auto &[id, wall] : params.walls)
       AssertThrow(mesh_ids.count(id) == 1,
                   ExcMessage("Grid/Boundary conditions names boundary id "
@@ -671,14 +669,17 @@ namespace fsgmpm
       = mpm_step->advance(dt, time + dt, current_gravity());
     if (partition)
       {
-        timed(mpi_points_stage,
-              [&] { DistributedPoints::migrate(*partition, particles); });
+        // The largest displacement ratio over the processes (infinite if
+        // some process's is not finite) comes with the migration.
+        timed(mpi_points_stage, [&] {
+          result.displacement_ratio = DistributedPoints::migrate(
+            *partition,
+            particles,
+            std::isfinite(result.displacement_ratio)
+              ? result.displacement_ratio
+              : std::numeric_limits<double>::infinity());
+        });
         const MPI_Comm &comm = partition->get_communicator();
-        result.displacement_ratio
-          = Utilities::MPI::max(std::isfinite(result.displacement_ratio)
-                                  ? result.displacement_ratio
-                                  : std::numeric_limits<double>::infinity(),
-                                comm);
         // Each process's node sums and their rounding corrections, added
         // over the processes separately (sum_over_processes()), and in the
         // same collective the point counts (exact: integers in doubles).

@@ -42,10 +42,9 @@ namespace fsgmpm
   {
     const unsigned int n = dof_handler.get_triangulation().n_active_cells();
     cell_nodes.resize(n);
-    shape_gradients.resize(n);
+    inverse_edges.resize(n);
     cell_volume.resize(n);
-    cell_min_altitude.resize(n);
-    face_boundary_id.resize(n);
+    boundary_faces.clear();
     node_positions.resize(dof_handler.n_dofs());
     node_volume.assign(dof_handler.n_dofs(), 0.);
 
@@ -94,29 +93,17 @@ namespace fsgmpm
                                + " near "
                                + Utilities::to_string(cell->center()[0])
                                + " is degenerate (zero volume)."));
-        const Tensor<2, dim> inv = invert(edges);
+        inverse_edges[c] = invert(edges);
 
         cell_volume[c] = std::abs(det) / factorial;
         for (const unsigned int node : cell_nodes[c])
           node_volume[node] += cell_volume[c] / n_vertices;
-        Tensor<1, dim> grad0;
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            shape_gradients[c][k + 1] = inv[k];
-            grad0 -= inv[k];
-          }
-        shape_gradients[c][0] = grad0;
 
-        double hmin = std::numeric_limits<double>::max();
-        for (unsigned int k = 0; k < n_vertices; ++k)
-          hmin = std::min(hmin, 1. / shape_gradients[c][k].norm());
-        cell_min_altitude[c] = hmin;
-        min_altitude_global  = std::min(min_altitude_global, hmin);
-        max_altitude_global  = std::max(max_altitude_global, hmin);
+        const double hmin   = min_altitude(c);
+        min_altitude_global = std::min(min_altitude_global, hmin);
+        max_altitude_global = std::max(max_altitude_global, hmin);
 
-        // Boundary ids, stored by the local vertex opposite the face.
-        for (unsigned int k = 0; k < n_vertices; ++k)
-          face_boundary_id[c][k] = numbers::internal_face_boundary_id;
+        // Boundary ids, by the local vertex opposite the face.
         for (unsigned int f = 0; f < cell->n_faces(); ++f)
           if (cell->face(f)->at_boundary())
             {
@@ -134,9 +121,16 @@ namespace fsgmpm
                     opposite = v;
                 }
               Assert(opposite != invalid, ExcInternalError());
-              face_boundary_id[c][opposite] = cell->face(f)->boundary_id();
+              boundary_faces.push_back(
+                {c, opposite, cell->face(f)->boundary_id()});
             }
       }
+    std::sort(boundary_faces.begin(),
+              boundary_faces.end(),
+              [](const BoundaryFace &a, const BoundaryFace &b) {
+                return std::make_pair(a.cell, a.vertex)
+                       < std::make_pair(b.cell, b.vertex);
+              });
   }
 
 
@@ -264,10 +258,9 @@ namespace fsgmpm
     };
     replicate(node_positions);
     replicate(node_volume);
-    replicate(shape_gradients);
+    replicate(inverse_edges);
     replicate(cell_volume);
-    replicate(cell_min_altitude);
-    replicate(face_boundary_id);
+    replicate(boundary_faces);
     replicate(cell_nodes);
     replicate(cell_neighbors);
     replicate(cell_block);
@@ -283,6 +276,12 @@ namespace fsgmpm
               neighbor += f * nc;
           cell_block[c] += f * nb;
         }
+    const unsigned int n_boundary_faces = boundary_faces.size() / n;
+    for (unsigned int f = 1; f < n; ++f)
+      for (unsigned int b = f * n_boundary_faces;
+           b < (f + 1) * n_boundary_faces;
+           ++b)
+        boundary_faces[b].cell += f * nc;
     for (unsigned int f = 1; f < n; ++f)
       for (unsigned int b = f * nb; b < (f + 1) * nb; ++b)
         block_colour[b] += f * nk;
@@ -297,11 +296,10 @@ namespace fsgmpm
     return MemoryConsumption::memory_consumption(node_positions)
            + MemoryConsumption::memory_consumption(node_volume)
            + MemoryConsumption::memory_consumption(cell_nodes)
-           + MemoryConsumption::memory_consumption(shape_gradients)
+           + MemoryConsumption::memory_consumption(inverse_edges)
            + MemoryConsumption::memory_consumption(cell_volume)
-           + MemoryConsumption::memory_consumption(cell_min_altitude)
            + MemoryConsumption::memory_consumption(cell_neighbors)
-           + MemoryConsumption::memory_consumption(face_boundary_id)
+           + boundary_faces.capacity() * sizeof(BoundaryFace)
            + MemoryConsumption::memory_consumption(cell_block)
            + MemoryConsumption::memory_consumption(block_colour);
   }

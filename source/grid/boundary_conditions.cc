@@ -89,21 +89,18 @@ namespace fsgmpm
     // Accumulate, per node and boundary id, the sum of outward face normals.
     std::vector<std::map<types::boundary_id, Tensor<1, dim>>> node_walls(
       grid.n_nodes());
-    for (unsigned int c = 0; c < grid.n_cells(); ++c)
-      for (unsigned int k = 0; k < dim + 1; ++k)
-        if (grid.cell_neighbors[c][k] == BackgroundGrid<dim>::invalid)
-          {
-            const types::boundary_id id = grid.face_boundary_id[c][k];
-            const auto               w  = walls.find(id);
-            if (w == walls.end() || w->second.type == WallType::free)
-              continue;
-            // Outward normal of the face opposite vertex k.
-            const Tensor<1, dim> n
-              = -grid.shape_gradients[c][k] / grid.shape_gradients[c][k].norm();
-            for (unsigned int v = 0; v < dim + 1; ++v)
-              if (v != k)
-                node_walls[grid.cell_nodes[c][v]][id] += n;
-          }
+    for (const auto &[c, k, id] : grid.boundary_faces)
+      {
+        const auto w = walls.find(id);
+        if (w == walls.end() || w->second.type == WallType::free)
+          continue;
+        // Outward normal of the face opposite vertex k.
+        const Tensor<1, dim> g = grid.shape_gradients(c)[k];
+        const Tensor<1, dim> n = -g / g.norm();
+        for (unsigned int v = 0; v < dim + 1; ++v)
+          if (v != k)
+            node_walls[grid.cell_nodes[c][v]][id] += n;
+      }
 
     node_to_entry.assign(grid.n_nodes(), BackgroundGrid<dim>::invalid);
     for (unsigned int i = 0; i < grid.n_nodes(); ++i)

@@ -29,11 +29,12 @@ namespace fsgmpm
     // Linear simplex: grad v = sum_i v_i (x) grad N_i is constant in the
     // cell; omega_z = dv_y/dx - dv_x/dy.
     const unsigned int c     = particles.cell[p];
+    const auto         grad  = grid.shape_gradients(c);
     double             omega = 0;
     for (unsigned int k = 0; k < dim + 1; ++k)
       {
         const auto &v = nodes.velocity[grid.cell_nodes[c][k]];
-        const auto &g = grid.shape_gradients[c][k];
+        const auto &g = grad[k];
         omega += v[1] * g[0] - v[0] * g[1];
       }
     const auto &s              = particles.stress[p];

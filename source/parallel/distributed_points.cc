@@ -1,3 +1,4 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/parallel/distributed_points.h>
@@ -267,12 +268,13 @@ namespace fsgmpm
 
 
     template <int dim>
-    void
+    double
     migrate(const DomainPartition<dim> &partition,
-            ParticleStore<dim>         &particles)
+            ParticleStore<dim>         &particles,
+            const double                value)
     {
       if (partition.n_ranks() == 1)
-        return;
+        return value;
       // After the step: MpmStep::advance cut the ghost copies off.
       Assert(particles.ghost.empty(), ExcInternalError());
       const auto &neighbours = partition.point_neighbours();
@@ -298,7 +300,13 @@ namespace fsgmpm
       const MPI_Comm &comm = partition.get_communicator();
       auto            received
         = exchange_with_neighbours(neighbours, near, comm, migration_tag);
-      if (Utilities::MPI::max(far.empty() ? 0u : 1u, comm) > 0)
+      // The caller's maximum rides in the same all-reduce.
+      const std::vector<double> local = {far.empty() ? 0. : 1., value};
+      std::vector<double>       global(2);
+      Utilities::MPI::max(make_array_view(local),
+                          comm,
+                          make_array_view(global));
+      if (global[0] > 0)
         for (auto &[rank, buffer] : Utilities::MPI::some_to_some(comm, far))
           {
             std::vector<char> &all = received[rank];
@@ -309,6 +317,7 @@ namespace fsgmpm
       for (const auto &[rank, buffer] : received)
         unpack(buffer, 0, particles);
       particles.sort_by_cell(particles.cell_begin.size());
+      return global[1];
     }
 
 
@@ -330,8 +339,9 @@ namespace fsgmpm
                                 ParticleStore<dim> &);         \
   template void         add_ghosts<dim>(const DomainPartition<dim> &,  \
                                 ParticleStore<dim> &);         \
-  template void         migrate<dim>(const DomainPartition<dim> &,     \
-                             ParticleStore<dim> &);            \
+  template double       migrate<dim>(const DomainPartition<dim> &,     \
+                               ParticleStore<dim> &,             \
+                               const double);                    \
   template void         drop_ghosts<dim>(ParticleStore<dim> &);        \
   template unsigned int global_size<dim>(const DomainPartition<dim> &, \
                                          const ParticleStore<dim> &);

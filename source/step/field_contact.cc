@@ -55,13 +55,13 @@ namespace fsgmpm
             }
           if (lower_copy_occupied)
             continue;
-          const unsigned int cb = grid.cell_in_field(c, 0);
+          const unsigned int cb   = grid.cell_in_field(c, 0);
+          const auto         grad = grid.shape_gradients(cb);
           Tensor<1, dim>     gradient;
           for (unsigned int k = 0; k < dim + 1; ++k)
             {
               const unsigned int i = grid.cell_nodes[cb][k];
-              gradient -= (nodes.mass[i] / grid.node_volume[i])
-                          * grid.shape_gradients[cb][k];
+              gradient -= (nodes.mass[i] / grid.node_volume[i]) * grad[k];
             }
           for (unsigned int k = 0; k < dim + 1; ++k)
             nodes.contact_normal[grid.cell_nodes[cb][k]]

@@ -68,7 +68,7 @@ namespace fsgmpm
         for (unsigned int p = particles.cell_begin[c];
              p < particles.cell_end[c];
              ++p)
-          particles.affine_velocity[p] = smoothing.velocity_gradient[c];
+          particles.affine_velocity[p] = smoothing.cell_velocity_gradient(c);
       });
     }
 

@@ -9,14 +9,13 @@ namespace fsgmpm
   {
     template <int dim>
     GridUpdateResult
-    grid_update(
-      const NodalConstraints<dim>                      &constraints,
-      const Tensor<1, dim>                             &gravity,
-      const double                                      alpha,
-      const double                                      dt,
-      NodalFields<dim>                                 &nodes,
-      const std::vector<std::uint8_t>                  *counted_nodes,
-      const std::function<void(std::vector<double> &)> &sum_over_processes)
+    grid_update(const NodalConstraints<dim>     &constraints,
+                const Tensor<1, dim>            &gravity,
+                const double                     alpha,
+                const double                     dt,
+                NodalFields<dim>                &nodes,
+                const std::vector<std::uint8_t> *counted_nodes,
+                const MPI_Comm                  *communicator)
     {
       GridUpdateResult r;
       // The damping work is booked on the nodes that carry a share of the
@@ -38,14 +37,14 @@ namespace fsgmpm
                 total_mass.add(nodes.mass[i]);
                 n_nodes += 1;
               }
-          if (sum_over_processes)
+          if (communicator != nullptr)
             {
-              // One collective for the three numbers.
-              std::vector<double> sums
-                = {total_mass.sum(), total_mass.correction(), n_nodes};
-              sum_over_processes(sums);
-              mean_mass = sums[0] + sums[1];
-              n_nodes   = sums[2];
+              // One collective for both (the count is exact in a double).
+              const std::vector<double> sums
+                = sum_over_processes({total_mass, CompensatedSum(n_nodes)},
+                                     *communicator);
+              mean_mass = sums[0];
+              n_nodes   = sums[1];
             }
           else
             mean_mass = total_mass.value();
@@ -117,7 +116,7 @@ namespace fsgmpm
                    const double,
                    NodalFields<2> &,
                    const std::vector<std::uint8_t> *,
-                   const std::function<void(std::vector<double> &)> &);
+                   const MPI_Comm *);
     template GridUpdateResult
     grid_update<3>(const NodalConstraints<3> &,
                    const Tensor<1, 3> &,
@@ -125,6 +124,6 @@ namespace fsgmpm
                    const double,
                    NodalFields<3> &,
                    const std::vector<std::uint8_t> *,
-                   const std::function<void(std::vector<double> &)> &);
+                   const MPI_Comm *);
   } // namespace Stages
 } // namespace fsgmpm

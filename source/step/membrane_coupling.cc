@@ -108,7 +108,7 @@ namespace fsgmpm
     if (!cell_stiffness.empty())
       for (const unsigned int c : occupied_cells)
         {
-          const auto  &grad = grid.shape_gradients[c];
+          const auto   grad = grid.shape_gradients(c);
           const double S    = cell_stiffness[c];
           if (!(S > 0))
             continue;
@@ -245,8 +245,8 @@ namespace fsgmpm
       {
         const Tensor<1, dim> &dx = displacement[a];
         membrane.position[a] += dx;
-        ratio = std::max(ratio,
-                         dx.norm() / grid.cell_min_altitude[membrane.cell[a]]);
+        ratio
+          = std::max(ratio, dx.norm() / grid.min_altitude(membrane.cell[a]));
       }
     return ratio;
   }

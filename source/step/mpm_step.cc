@@ -200,22 +200,15 @@ namespace fsgmpm
     constraints.set_time(new_time);
     {
       TimerOutput::Scope scope(timer, "grid_update");
-      result.grid = Stages::grid_update(
-        constraints,
-        gravity,
-        settings.local_damping,
-        dt,
-        nodes,
-        partition ? &partition->counted_nodes() : nullptr,
-        [this](std::vector<double> &x) {
-          if (partition != nullptr)
-            {
-              const std::vector<double> local = x;
-              Utilities::MPI::sum(make_array_view(local),
-                                  partition->get_communicator(),
-                                  make_array_view(x));
-            }
-        });
+      result.grid
+        = Stages::grid_update(constraints,
+                              gravity,
+                              settings.local_damping,
+                              dt,
+                              nodes,
+                              partition ? &partition->counted_nodes() : nullptr,
+                              partition ? &partition->get_communicator()
+                                        : nullptr);
       // The contact's dissipation is not booked as damping work: the nodal
       // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
       // guard only objects to energy gained.

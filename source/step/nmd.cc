@@ -26,7 +26,7 @@ namespace fsgmpm
       if (any_nmd)
         CellLoops::scatter_by_colour(
           grid, particles, [&](const unsigned int c) {
-            const double rate = trace(smoothing.velocity_gradient[c]);
+            const double rate = trace(smoothing.cell_velocity_gradient(c));
             thread_local std::vector<double> scale;
             CellLoops::weight_scales(
               grid,

@@ -71,13 +71,13 @@ namespace fsgmpm
           volume_stress *= 1.
                            - CellLoops::projection_share(points_volume,
                                                          grid.cell_volume[c]);
+        const auto grad = grid.shape_gradients(c);
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int n = grid.cell_nodes[c][k];
             nodes.mass[n] += m[k];
             nodes.momentum[n] += mv[k];
-            nodes.internal_force[n]
-              += volume_stress * grid.shape_gradients[c][k];
+            nodes.internal_force[n] += volume_stress * grad[k];
             if (project)
               {
                 nodes.volume_stress[n] += nodal_volume_stress[k];
@@ -102,9 +102,9 @@ namespace fsgmpm
         for (const unsigned int n : grid.cell_nodes[c])
           cell_stress += nodes.volume_stress[n] / nodes.support_volume[n];
         cell_stress *= theta * grid.cell_volume[c] / (dim + 1);
+        const auto grad = grid.shape_gradients(c);
         for (unsigned int k = 0; k < dim + 1; ++k)
-          nodes.internal_force[grid.cell_nodes[c][k]]
-            += cell_stress * grid.shape_gradients[c][k];
+          nodes.internal_force[grid.cell_nodes[c][k]] += cell_stress * grad[k];
       });
     }
 

@@ -39,7 +39,7 @@ namespace fsgmpm
                   particles.position[p] += dx;
                   max_disp = std::max(max_disp, dx.norm_square());
                 }
-              cell_ratio[i] = std::sqrt(max_disp) / grid.cell_min_altitude[c];
+              cell_ratio[i] = std::sqrt(max_disp) / grid.min_altitude(c);
             }
         },
         16);

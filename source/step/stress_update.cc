@@ -45,7 +45,7 @@ namespace fsgmpm
         // the cell's (and its rotation) are not needed then.
         const PointKinematics cell_kin
           = per_point ? PointKinematics()
-                      : kinematics_of(smoothing.velocity_gradient[c]);
+                      : kinematics_of(smoothing.cell_velocity_gradient(c));
 
         // Before any volume changes: the share p2g used.
         const double theta

@@ -25,7 +25,7 @@ namespace fsgmpm
           for (unsigned int i = b; i < e; ++i)
             {
               const unsigned int c     = cells[i];
-              const double       h     = grid.cell_min_altitude[c];
+              const double       h     = grid.min_altitude(c);
               double             speed = 0, stiffness = 0;
               for (unsigned int p = particles.cell_begin[c];
                    p < particles.cell_end[c];

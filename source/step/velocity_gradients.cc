@@ -13,12 +13,13 @@ namespace fsgmpm
                        const ParticleStore<dim>  &particles)
     {
       // Linear simplices: grad v is constant in a cell.
+      smoothing.number_occupied_cells(particles.occupied_cells);
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
+        const auto     grad = grid.shape_gradients(c);
         Tensor<2, dim> L;
         for (unsigned int k = 0; k < dim + 1; ++k)
-          L += outer_product(nodes.velocity[grid.cell_nodes[c][k]],
-                             grid.shape_gradients[c][k]);
-        smoothing.velocity_gradient[c] = L;
+          L += outer_product(nodes.velocity[grid.cell_nodes[c][k]], grad[k]);
+        smoothing.cell_velocity_gradient(c) = L;
       });
     }
 
@@ -46,7 +47,7 @@ namespace fsgmpm
         const Tensor<2, dim> share
           = (CellLoops::projection_share(grid, particles, c)
              * grid.cell_volume[c] / (dim + 1))
-            * smoothing.velocity_gradient[c];
+            * smoothing.cell_velocity_gradient(c);
         for (const unsigned int n : grid.cell_nodes[c])
           Lbar[n] += share;
       });

@@ -156,8 +156,8 @@ namespace
             const auto &xk = grid->node_positions[grid->cell_nodes[c][k]];
             unity += lambda[k];
             xx += lambda[k] * xk;
-            grad_sum += grid->shape_gradients[c][k];
-            grad_x += outer_product(xk, grid->shape_gradients[c][k]);
+            grad_sum += grid->shape_gradients(c)[k];
+            grad_x += outer_product(xk, grid->shape_gradients(c)[k]);
           }
         worst_unity  = std::max(worst_unity, std::abs(unity - 1));
         worst_linear = std::max(worst_linear, (xx - x).norm());
@@ -279,7 +279,7 @@ namespace
     double                      max_gradient = 0;
     for (unsigned int k = 0; k < dim + 1; ++k)
       max_gradient
-        = std::max(max_gradient, grid->shape_gradients[c0][k].norm());
+        = std::max(max_gradient, grid->shape_gradients(c0)[k].norm());
     const double J = V * 1e4 * max_gradient;
 
     const unsigned int          n_steps = 2000;

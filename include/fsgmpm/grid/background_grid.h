@@ -8,7 +8,9 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <vector>
 
 namespace fsgmpm
@@ -21,13 +23,14 @@ namespace fsgmpm
    *
    * For linear simplices the shape function of local vertex k at a point x is
    * its barycentric coordinate lambda_k(x) and its gradient is constant over
-   * the cell. We therefore precompute for every cell the dim+1 gradients
-   * once: those of vertices 1..dim are the rows of the exact inverse A of the
-   * affine map (lambda_1..lambda_dim = A (x - x_0), lambda_0 = 1 - sum), so
-   * point location and all particle-grid transfers use only these gradients
-   * and the node positions, never a mapping's Newton iteration. Negatively
-   * oriented cells (Gmsh tets) need no special care: A is the inverse of the
-   * cell's edge matrix whatever the sign of its determinant.
+   * the cell. We therefore precompute for every cell the exact inverse A of
+   * the affine map once: its rows are the gradients of vertices 1..dim
+   * (lambda_1..lambda_dim = A (x - x_0); lambda_0 = 1 - sum, whose gradient
+   * is minus theirs), so point location and all particle-grid transfers use
+   * only these gradients and the node positions, never a mapping's Newton
+   * iteration. Negatively oriented cells (Gmsh tets) need no special care:
+   * A is the inverse of the cell's edge matrix whatever the sign of its
+   * determinant.
    *
    * Nodes are numbered as the degrees of freedom of a scalar
    * FE_SimplexP<dim>(1) on the triangulation, and cells as its active cells.
@@ -126,11 +129,42 @@ namespace fsgmpm
       double                      sum = 0;
       for (unsigned int k = 0; k < dim; ++k)
         {
-          lambda[k + 1] = shape_gradients[c][k + 1] * d;
+          lambda[k + 1] = inverse_edges[c][k] * d;
           sum += lambda[k + 1];
         }
       lambda[0] = 1. - sum;
       return lambda;
+    }
+
+    /**
+     * Gradients of the dim + 1 shape functions of cell @p c (constant over
+     * the cell): those of vertices 1..dim are the rows of the inverse edge
+     * matrix, that of vertex 0 minus their sum (the shape functions sum to
+     * one). Computed, not stored: the sum costs dim additions where a
+     * stored copy cost 16 B per triangle, 24 B per tetrahedron.
+     */
+    std::array<Tensor<1, dim>, dim + 1>
+    shape_gradients(const unsigned int c) const
+    {
+      std::array<Tensor<1, dim>, dim + 1> g;
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          g[k + 1] = inverse_edges[c][k];
+          g[0] -= inverse_edges[c][k];
+        }
+      return g;
+    }
+
+    /// Smallest altitude of cell @p c: min_k 1/|grad lambda_k| (for the
+    /// time step and the displacement guards; computed, not stored).
+    double
+    min_altitude(const unsigned int c) const
+    {
+      double     hmin = std::numeric_limits<double>::max();
+      const auto g    = shape_gradients(c);
+      for (unsigned int k = 0; k < n_vertices; ++k)
+        hmin = std::min(hmin, 1. / g[k].norm());
+      return hmin;
     }
 
     /// Cartesian position from barycentric coordinates in cell @p c.
@@ -168,18 +202,25 @@ namespace fsgmpm
 
     // ---- per-cell data (index = active cell index) ---------------------
     std::vector<std::array<unsigned int, dim + 1>> cell_nodes;
-    /// Gradients of the dim+1 shape functions (constant per cell); those
-    /// of k = 1..dim are the rows of the inverse of the edge matrix
-    /// (x_k - x_0), so lambda_k = grad lambda_k . (x - x_0).
-    std::vector<std::array<Tensor<1, dim>, dim + 1>> shape_gradients;
-    std::vector<double>                              cell_volume;
-    /// Smallest altitude of the cell: min_k 1/|grad lambda_k|.
-    std::vector<double> cell_min_altitude;
+    /// Inverse of the edge matrix (x_k - x_0): row k - 1 is the gradient of
+    /// lambda_k, so lambda_k = grad lambda_k . (x - x_0) (shape_gradients()).
+    std::vector<Tensor<2, dim>> inverse_edges;
+    std::vector<double>         cell_volume;
     /// Cell across the face opposite local vertex k, or invalid.
     std::vector<std::array<unsigned int, dim + 1>> cell_neighbors;
-    /// deal.II boundary id of the face opposite local vertex k (only
-    /// meaningful where cell_neighbors is invalid).
-    std::vector<std::array<types::boundary_id, dim + 1>> face_boundary_id;
+
+    /// A face on the mesh boundary: the face of @p cell opposite its local
+    /// vertex @p vertex, with its deal.II boundary id.
+    struct BoundaryFace
+    {
+      unsigned int       cell;
+      unsigned int       vertex;
+      types::boundary_id boundary_id;
+    };
+    /// The boundary faces (the faces without a neighbour), by cell and then
+    /// local vertex: a list, not an id per face of every cell, since only
+    /// the setup of the wall conditions reads them.
+    std::vector<BoundaryFace> boundary_faces;
 
     /// Cells in blocks of consecutive numbers (a box mesh numbers its cells
     /// row by row, so a block is a compact strip), and the blocks in colours

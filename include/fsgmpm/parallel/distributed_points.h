@@ -53,12 +53,15 @@ namespace fsgmpm
      * point neighbours (DomainPartition::point_neighbours()) point to
      * point, with one all-reduce to find out whether any process has
      * points for others (after a repartition), which then go through
-     * Utilities::MPI::some_to_some().
+     * Utilities::MPI::some_to_some(). Returns the largest @p value over
+     * the processes, taken in that all-reduce (the step's displacement
+     * ratio: one collective less per step).
      */
     template <int dim>
-    void
+    double
     migrate(const DomainPartition<dim> &partition,
-            ParticleStore<dim>         &particles);
+            ParticleStore<dim>         &particles,
+            const double                value = 0.);
 
     /// The number of points over all processes.
     template <int dim>

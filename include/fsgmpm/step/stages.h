@@ -98,22 +98,20 @@ namespace fsgmpm
     /// Stage 2 (Eq. 18): a = (F_ext - F_int + F_damp)/m with gravity in
     /// F_ext, local non-viscous damping F_damp = -alpha |F_unbal| sign(v),
     /// wall conditions on v^{n+1} = v^n + dt a, and a consistent with them.
-    template <int dim>
-    GridUpdateResult
     /// With @p counted_nodes (MPI), the result sums only the nodes marked
     /// 1 there, so that the sums over all processes count each node once,
-    /// and @p sum_over_processes (MPI) adds numbers up over the processes,
-    /// in place (the mean nodal mass that decides which nodes book damping
-    /// work).
-    grid_update(
-      const NodalConstraints<dim>                      &constraints,
-      const Tensor<1, dim>                             &gravity,
-      const double                                      damping_alpha,
-      const double                                      dt,
-      NodalFields<dim>                                 &nodes,
-      const std::vector<std::uint8_t>                  *counted_nodes = nullptr,
-      const std::function<void(std::vector<double> &)> &sum_over_processes
-      = {});
+    /// and the mean nodal mass that decides which nodes book damping work
+    /// is taken over the processes of @p communicator (MPI; nullptr for
+    /// one process).
+    template <int dim>
+    GridUpdateResult
+    grid_update(const NodalConstraints<dim>     &constraints,
+                const Tensor<1, dim>            &gravity,
+                const double                     damping_alpha,
+                const double                     dt,
+                NodalFields<dim>                &nodes,
+                const std::vector<std::uint8_t> *counted_nodes = nullptr,
+                const MPI_Comm                  *communicator  = nullptr);
 
     /// Multi-field contact, part 1 (once per step, after p2g and
     /// MembraneCoupling::p2g): at every node of field 0 the contact normal,
@@ -212,7 +210,7 @@ namespace fsgmpm
                             const double                       theta,
                             const std::array<double, dim + 1> &lambda)
     {
-      Tensor<2, dim> L = (1. - theta) * smoothing.velocity_gradient[c];
+      Tensor<2, dim> L = (1. - theta) * smoothing.cell_velocity_gradient(c);
       for (unsigned int k = 0; k < dim + 1; ++k)
         L += lambda[k]
              * smoothing.nodal_velocity_gradient[grid.cell_nodes[c][k]];
