@@ -550,7 +550,7 @@ namespace fsgmpm
 
   template <int dim>
   void
-  Simulator<dim>::compute_monitors()
+  Simulator<dim>::compute_monitors(const bool after_step)
   {
     // MPI: every process holds the whole membrane; process 0 adds it.
     EnergyBalance::compute_energies(particles,
@@ -559,7 +559,10 @@ namespace fsgmpm
                                     params.gravity,
                                     monitors,
                                     partition ? partition->get_communicator()
-                                              : MPI_COMM_SELF);
+                                              : MPI_COMM_SELF,
+                                    after_step ? &nodes : nullptr,
+                                    partition ? &partition->counted_nodes()
+                                              : nullptr);
   }
 
 
@@ -721,9 +724,8 @@ namespace fsgmpm
 
     bool ok = true;
     timed(monitor_stage, [&] {
-      compute_monitors();
-      EnergyBalance::add_step(
-        result.grid, result.lost_particles, nodes, monitors, partition.get());
+      compute_monitors(true);
+      EnergyBalance::add_step(result.grid, result.lost_particles, monitors);
     });
     timed(kinetic_damping_stage, [&] {
       relaxation.apply_kinetic_damping(monitors, particles, membrane.get());

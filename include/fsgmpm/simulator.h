@@ -229,8 +229,10 @@ namespace fsgmpm
     void
     fill_bodies(const std::vector<std::uint8_t> *keep_cell,
                 std::vector<unsigned int>       *points_per_cell);
+    /// The energies of monitors.csv; @p after_step: also the grid's kinetic
+    /// energy of Eq. (30) (EnergyBalance::compute_energies()).
     void
-    compute_monitors();
+    compute_monitors(const bool after_step = false);
     /// (flagged, detecting) points from Stages::detect_free_surface.
     void
     set_free_surface_fraction(const std::pair<unsigned int, unsigned int> &n)

@@ -17,7 +17,9 @@ namespace fsgmpm
                      const Membrane<dim>                          *membrane,
                      const Tensor<1, dim>                         &gravity,
                      Monitors                                     &monitors,
-                     const MPI_Comm                                communicator)
+                     const MPI_Comm                                communicator,
+                     const NodalFields<dim>                       *nodes,
+                     const std::vector<std::uint8_t> *counted_nodes)
     {
       const auto                        &cells = particles.occupied_cells;
       std::vector<std::array<double, 3>> partial(cells.size());
@@ -56,45 +58,45 @@ namespace fsgmpm
           for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
             sums[2].add(-membrane->mass[a] * (gravity * membrane->position[a]));
         }
+      // Eq. (30)'s kinetic energy of the grid, compensated.
+      if (nodes)
+        {
+          sums.emplace_back();
+          for (const unsigned int i : nodes->active_nodes)
+            if (counted_nodes == nullptr || (*counted_nodes)[i])
+              sums.back().add(0.5 * nodes->mass[i]
+                              * nodes->velocity[i].norm_square());
+        }
       const std::vector<double> energies
         = sum_over_processes(sums, communicator);
       monitors.kinetic_energy   = energies[0];
       monitors.strain_energy    = energies[1];
       monitors.potential_energy = energies[2];
+      if (nodes)
+        monitors.grid_kinetic_energy = energies[3];
     }
 
 
 
-    template <int dim>
     void
     add_step(const Stages::GridUpdateResult &grid_result,
              const unsigned int              lost_particles,
-             const NodalFields<dim>         &nodes,
-             Monitors                       &monitors,
-             const DomainPartition<dim>     *partition)
+             Monitors                       &monitors)
     {
       monitors.lost_particles += lost_particles;
       monitors.external_work += grid_result.external_work_increment.value();
       monitors.dissipated_energy += grid_result.damping_work_increment.value();
 
-      // Eq. (30) from the nodal (remapped) velocities, compensated.
-      CompensatedSum kinetic;
-      for (const unsigned int i : nodes.active_nodes)
-        if (partition == nullptr || partition->counted_nodes()[i])
-          kinetic.add(0.5 * nodes.mass[i] * nodes.velocity[i].norm_square());
-      const double nodal_ke
-        = (partition == nullptr)
-            ? kinetic.value()
-            : sum_over_processes(kinetic, partition->get_communicator());
-      monitors.grid_kinetic_energy = nodal_ke;
-      monitors.dr_energy_ratio     = (monitors.external_work > 0)
-                                       ? nodal_ke / monitors.external_work
-                                       : std::numeric_limits<double>::infinity();
-      const double unbalanced_sq   = grid_result.unbalanced_norm_sq.value();
-      const double external_sq     = grid_result.external_norm_sq.value();
-      monitors.dr_force_ratio      = (external_sq > 0)
-                                       ? std::sqrt(unbalanced_sq / external_sq)
-                                       : std::numeric_limits<double>::infinity();
+      // Eq. (30) from the nodal (remapped) velocities.
+      const double nodal_ke      = monitors.grid_kinetic_energy;
+      monitors.dr_energy_ratio   = (monitors.external_work > 0)
+                                     ? nodal_ke / monitors.external_work
+                                     : std::numeric_limits<double>::infinity();
+      const double unbalanced_sq = grid_result.unbalanced_norm_sq.value();
+      const double external_sq   = grid_result.external_norm_sq.value();
+      monitors.dr_force_ratio    = (external_sq > 0)
+                                     ? std::sqrt(unbalanced_sq / external_sq)
+                                     : std::numeric_limits<double>::infinity();
     }
 
 
@@ -119,12 +121,9 @@ namespace fsgmpm
     const Membrane<dim> *,                                                \
     const Tensor<1, dim> &,                                               \
     Monitors &,                                                           \
-    const MPI_Comm);                                                      \
-  template void   add_step<dim>(const Stages::GridUpdateResult &,         \
-                              const unsigned int,                       \
-                              const NodalFields<dim> &,                 \
-                              Monitors &,                               \
-                              const DomainPartition<dim> *);            \
+    const MPI_Comm,                                                       \
+    const NodalFields<dim> *,                                             \
+    const std::vector<std::uint8_t> *);                                   \
   template double potential_energy_above<dim>(const ParticleStore<dim> &, \
                                               const Tensor<1, dim> &,     \
                                               const Point<dim> &);

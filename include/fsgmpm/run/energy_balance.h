@@ -6,11 +6,11 @@
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/material.h>
 #include <fsgmpm/membrane/membrane.h>
-#include <fsgmpm/parallel/domain_partition.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/monitors.h>
 #include <fsgmpm/step/stages.h>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -30,6 +30,11 @@ namespace fsgmpm
     /// processes of @p communicator (each passes its own points, one of
     /// them the membrane): the result does not depend on the number of
     /// threads, and on the number of processes only in the last bit or two.
+    /// With @p nodes (after a step), also the kinetic energy of the grid
+    /// from the nodal (remapped) velocities into
+    /// monitors.grid_kinetic_energy, in the same sum over the processes
+    /// (one collective for the four): with @p counted_nodes (MPI) only the
+    /// nodes marked 1 there, so that each node counts once.
     template <int dim>
     void
     compute_energies(const ParticleStore<dim>                     &particles,
@@ -37,22 +42,20 @@ namespace fsgmpm
                      const Membrane<dim>                          *membrane,
                      const Tensor<1, dim>                         &gravity,
                      Monitors                                     &monitors,
-                     const MPI_Comm communicator = MPI_COMM_SELF);
+                     const MPI_Comm          communicator = MPI_COMM_SELF,
+                     const NodalFields<dim> *nodes        = nullptr,
+                     const std::vector<std::uint8_t> *counted_nodes = nullptr);
 
     /// Books a step's external and damping work and its lost points, and
-    /// the dynamic-relaxation ratios of Eq. (30) from the nodal (remapped)
-    /// velocities: E_v = grid kinetic energy / external work, E_f =
-    /// |F_ext - F_int| / |F_ext| over the unconstrained nodal components
-    /// (infinite until there is external work or force). With MPI,
-    /// @p grid_result and @p lost_particles are already global and the
-    /// grid kinetic energy is summed over the nodes each process counts.
-    template <int dim>
+    /// the dynamic-relaxation ratios of Eq. (30): E_v = grid kinetic
+    /// energy (compute_energies() with the nodes, called before) / external
+    /// work, E_f = |F_ext - F_int| / |F_ext| over the unconstrained nodal
+    /// components (infinite until there is external work or force). With
+    /// MPI, @p grid_result and @p lost_particles are already global.
     void
     add_step(const Stages::GridUpdateResult &grid_result,
              const unsigned int              lost_particles,
-             const NodalFields<dim>         &nodes,
-             Monitors                       &monitors,
-             const DomainPartition<dim>     *partition = nullptr);
+             Monitors                       &monitors);
 
     /// Potential energy of the points above @p datum (a point of zero
     /// height, e.g. the mesh's lowest corner): the scale of the at-rest
