@@ -109,30 +109,40 @@ namespace fsgmpm
 
     bodies = BodyDescription<dim>::parse_bodies(prm);
 
-    Triangulation<dim> triangulation;
-    if (params.grid_type == "box")
-      MeshGeneration::make_box(params.lower_corner,
-                               params.upper_corner,
-                               params.subdivisions,
-                               triangulation);
-    else if (params.grid_type == "extruded box")
+    // MPI: process 0 builds the grid from the mesh and sends it to the
+    // others, which never hold the mesh (its creation is the peak of a
+    // process's memory). An error there stops every process (main()).
+    const bool several = Parallel::n_processes(MPI_COMM_WORLD) > 1;
+    if (!several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
-        if constexpr (dim == 3)
+        Triangulation<dim> triangulation;
+        if (params.grid_type == "box")
+          MeshGeneration::make_box(params.lower_corner,
+                                   params.upper_corner,
+                                   params.subdivisions,
+                                   triangulation);
+        else if (params.grid_type == "extruded box")
           {
-            Triangulation<2> base;
-            MeshGeneration::make_box(
-              Point<2>(params.lower_corner[0], params.lower_corner[1]),
-              Point<2>(params.upper_corner[0], params.upper_corner[1]),
-              params.subdivisions,
-              base);
-            MeshGeneration::extrude_to_tetrahedra(base,
-                                                  params.extrusion_thickness,
-                                                  triangulation);
+            if constexpr (dim == 3)
+              {
+                Triangulation<2> base;
+                MeshGeneration::make_box(
+                  Point<2>(params.lower_corner[0], params.lower_corner[1]),
+                  Point<2>(params.upper_corner[0], params.upper_corner[1]),
+                  params.subdivisions,
+                  base);
+                MeshGeneration::extrude_to_tetrahedra(
+                  base, params.extrusion_thickness, triangulation);
+              }
           }
+        else
+          MeshGeneration::read_gmsh(params.mesh_file, triangulation);
+        grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
       }
     else
-      MeshGeneration::read_gmsh(params.mesh_file, triangulation);
-    grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
+      grid = std::make_unique<BackgroundGrid<dim>>();
+    if (several)
+      grid->broadcast(MPI_COMM_WORLD);
     unsigned int n_fields = 1;
     for (const auto &body : bodies)
       n_fields = std::max(n_fields, body.velocity_field + 1);

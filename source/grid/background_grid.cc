@@ -6,6 +6,7 @@
 #include <fsgmpm/grid/background_grid.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <map>
 
@@ -285,6 +286,76 @@ namespace fsgmpm
     for (unsigned int f = 1; f < n; ++f)
       for (unsigned int b = f * nb; b < (f + 1) * nb; ++b)
         block_colour[b] += f * nk;
+  }
+
+
+
+  namespace
+  {
+    // The bytes of a vector of plain values from process root to all, in
+    // pieces of at most 1 GiB (an MPI count is an int).
+    template <typename T>
+    void
+    broadcast_vector(std::vector<T>    &values,
+                     const MPI_Comm    &communicator,
+                     const unsigned int root)
+    {
+      std::uint64_t n    = values.size();
+      int           ierr = MPI_Bcast(&n, 1, MPI_UINT64_T, root, communicator);
+      AssertThrowMPI(ierr);
+      values.resize(n);
+      char               *bytes = reinterpret_cast<char *>(values.data());
+      const std::uint64_t size  = n * sizeof(T);
+      const std::uint64_t piece = std::uint64_t(1) << 30;
+      for (std::uint64_t offset = 0; offset < size; offset += piece)
+        {
+          ierr = MPI_Bcast(bytes + offset,
+                           static_cast<int>(std::min(piece, size - offset)),
+                           MPI_BYTE,
+                           root,
+                           communicator);
+          AssertThrowMPI(ierr);
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::broadcast(const MPI_Comm    &communicator,
+                                 const unsigned int root)
+  {
+    AssertThrow(n_fields == 1,
+                ExcMessage("Broadcast a grid before its velocity fields."));
+    std::vector<double> scalars;
+    if (Utilities::MPI::this_mpi_process(communicator) == root)
+      {
+        scalars = {min_altitude_global, max_altitude_global, double(n_colours)};
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            scalars.push_back(lower_corner[d]);
+            scalars.push_back(upper_corner[d]);
+          }
+      }
+    broadcast_vector(scalars, communicator, root);
+    min_altitude_global = scalars[0];
+    max_altitude_global = scalars[1];
+    n_colours           = static_cast<unsigned int>(scalars[2]);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower_corner[d] = scalars[3 + 2 * d];
+        upper_corner[d] = scalars[4 + 2 * d];
+      }
+    broadcast_vector(node_positions, communicator, root);
+    broadcast_vector(node_volume, communicator, root);
+    broadcast_vector(cell_nodes, communicator, root);
+    broadcast_vector(inverse_edges, communicator, root);
+    broadcast_vector(cell_volume, communicator, root);
+    broadcast_vector(cell_neighbors, communicator, root);
+    broadcast_vector(boundary_faces, communicator, root);
+    broadcast_vector(cell_block, communicator, root);
+    broadcast_vector(block_colour, communicator, root);
   }
 
 

@@ -10,6 +10,8 @@
 // so they are not point neighbours. Every process puts one point at the
 // centre of each of its cells, with an id, mass, velocity and stress made
 // from the cell's index, so that every field can be checked on arrival.
+//
+// And BackgroundGrid::broadcast: the grid process 0 built, on every process.
 
 #include <deal.II/base/mpi.h>
 
@@ -251,6 +253,45 @@ TEST(PointExchange, PointsMoveToTheirNewOwnersNearAndFar)
     {
       EXPECT_EQ(holds(far_id), 0);
       EXPECT_EQ(holds(near_id), 0);
+    }
+}
+
+
+
+TEST(GridBroadcast, EveryProcessGetsTheGridProcessZeroBuilt)
+{
+  // Only process 0 builds a grid from a mesh; the others start empty.
+  const MPI_Comm     comm = MPI_COMM_WORLD;
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+  std::unique_ptr<BackgroundGrid<dim>> grid
+    = rank == 0 ? test_tools::make_unit_box_grid<dim>(6)
+                : std::make_unique<BackgroundGrid<dim>>();
+  grid->broadcast(comm);
+  const auto reference = test_tools::make_unit_box_grid<dim>(6);
+  EXPECT_EQ(grid->n_cells(), 72u);
+  EXPECT_EQ(grid->node_positions, reference->node_positions);
+  EXPECT_EQ(grid->node_volume, reference->node_volume);
+  EXPECT_EQ(grid->cell_nodes, reference->cell_nodes);
+  EXPECT_EQ(grid->inverse_edges, reference->inverse_edges);
+  EXPECT_EQ(grid->cell_volume, reference->cell_volume);
+  EXPECT_EQ(grid->cell_neighbors, reference->cell_neighbors);
+  EXPECT_EQ(grid->cell_block, reference->cell_block);
+  EXPECT_EQ(grid->block_colour, reference->block_colour);
+  EXPECT_EQ(grid->n_colours, reference->n_colours);
+  EXPECT_EQ(grid->min_altitude_global, reference->min_altitude_global);
+  EXPECT_EQ(grid->max_altitude_global, reference->max_altitude_global);
+  EXPECT_EQ(grid->lower_corner, reference->lower_corner);
+  EXPECT_EQ(grid->upper_corner, reference->upper_corner);
+  ASSERT_EQ(grid->boundary_faces.size(), 24u);
+  ASSERT_EQ(grid->boundary_faces.size(), reference->boundary_faces.size());
+  for (unsigned int f = 0; f < grid->boundary_faces.size(); ++f)
+    {
+      EXPECT_EQ(grid->boundary_faces[f].cell,
+                reference->boundary_faces[f].cell);
+      EXPECT_EQ(grid->boundary_faces[f].vertex,
+                reference->boundary_faces[f].vertex);
+      EXPECT_EQ(grid->boundary_faces[f].boundary_id,
+                reference->boundary_faces[f].boundary_id);
     }
 }
 

@@ -1,6 +1,7 @@
 #ifndef fsgmpm_grid_background_grid_h
 #define fsgmpm_grid_background_grid_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -52,6 +53,20 @@ namespace fsgmpm
      * of simplices or has a degenerate cell.
      */
     explicit BackgroundGrid(Triangulation<dim> &&triangulation);
+
+    /// An empty grid, for broadcast() to fill.
+    BackgroundGrid() = default;
+
+    /**
+     * MPI: make the grid of every process of @p communicator a copy of
+     * process @p root's, which built it from the mesh; the others call
+     * this on an empty grid. Then only one process ever holds deal.II's
+     * mesh, whose creation is the peak of a process's memory (its cell
+     * list, connectivity and arrays: some 320 B per triangle, where the
+     * grid keeps about 80 B). Call before set_velocity_fields().
+     */
+    void
+    broadcast(const MPI_Comm &communicator, const unsigned int root = 0);
 
     unsigned int
     n_cells() const
