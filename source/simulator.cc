@@ -560,7 +560,7 @@ namespace fsgmpm
 
   template <int dim>
   void
-  Simulator<dim>::compute_monitors(const bool after_step)
+  Simulator<dim>::compute_monitors()
   {
     // MPI: every process holds the whole membrane; process 0 adds it.
     EnergyBalance::compute_energies(particles,
@@ -569,10 +569,22 @@ namespace fsgmpm
                                     params.gravity,
                                     monitors,
                                     partition ? partition->get_communicator()
-                                              : MPI_COMM_SELF,
-                                    after_step ? &nodes : nullptr,
-                                    partition ? &partition->counted_nodes()
-                                              : nullptr);
+                                              : MPI_COMM_SELF);
+  }
+
+
+
+  template <int dim>
+  std::vector<CompensatedSum>
+  Simulator<dim>::local_energies() const
+  {
+    return EnergyBalance::local_energies(particles,
+                                         materials,
+                                         root ? membrane.get() : nullptr,
+                                         params.gravity,
+                                         &nodes,
+                                         partition ? &partition->counted_nodes()
+                                                   : nullptr);
   }
 
 
@@ -695,18 +707,24 @@ namespace fsgmpm
         const MPI_Comm &comm = partition->get_communicator();
         // Each process's node sums and their rounding corrections, added
         // over the processes separately (sum_over_processes()), and in the
-        // same collective the point counts (exact: integers in doubles).
-        Stages::GridUpdateResult &g    = result.grid;
-        const auto                free = local_free_surface_counts();
-        const std::vector<double> total
-          = sum_over_processes({g.external_work_increment,
-                                g.damping_work_increment,
-                                g.unbalanced_norm_sq,
-                                g.external_norm_sq,
-                                CompensatedSum(particles.size()),
-                                CompensatedSum(free.first),
-                                CompensatedSum(free.second)},
-                               comm);
+        // same collective the point counts (exact: integers in doubles)
+        // and the energies (the membrane's from process 0).
+        std::vector<CompensatedSum> energies;
+        timed(monitor_stage, [&] { energies = local_energies(); });
+        Stages::GridUpdateResult   &g    = result.grid;
+        const auto                  free = local_free_surface_counts();
+        std::vector<CompensatedSum> sums = {g.external_work_increment,
+                                            g.damping_work_increment,
+                                            g.unbalanced_norm_sq,
+                                            g.external_norm_sq,
+                                            CompensatedSum(particles.size()),
+                                            CompensatedSum(free.first),
+                                            CompensatedSum(free.second)};
+        sums.insert(sums.end(), energies.begin(), energies.end());
+        const std::vector<double> total = sum_over_processes(sums, comm);
+        EnergyBalance::set_energies(make_array_view(total.cbegin() + 7,
+                                                    total.cend()),
+                                    monitors);
         g.external_work_increment = CompensatedSum(total[0]);
         g.damping_work_increment  = CompensatedSum(total[1]);
         g.unbalanced_norm_sq      = CompensatedSum(total[2]);
@@ -734,7 +752,14 @@ namespace fsgmpm
 
     bool ok = true;
     timed(monitor_stage, [&] {
-      compute_monitors(true);
+      if (!partition)
+        {
+          std::vector<double> totals;
+          for (const CompensatedSum &e : local_energies())
+            totals.push_back(e.value());
+          EnergyBalance::set_energies(make_array_view(std::as_const(totals)),
+                                      monitors);
+        }
       EnergyBalance::add_step(result.grid, result.lost_particles, monitors);
     });
     timed(kinetic_damping_stage, [&] {

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/boundary_conditions.h>
 #include <fsgmpm/grid/nodal_fields.h>
@@ -229,10 +230,14 @@ namespace fsgmpm
     void
     fill_bodies(const std::vector<std::uint8_t> *keep_cell,
                 std::vector<unsigned int>       *points_per_cell);
-    /// The energies of monitors.csv; @p after_step: also the grid's kinetic
-    /// energy of Eq. (30) (EnergyBalance::compute_energies()).
+    /// The energies of monitors.csv (at the start of a run).
     void
-    compute_monitors(const bool after_step = false);
+    compute_monitors();
+    /// After a step: this process's energies and the grid's kinetic energy
+    /// of Eq. (30) (EnergyBalance::local_energies()), to be summed over the
+    /// processes.
+    std::vector<CompensatedSum>
+    local_energies() const;
     /// (flagged, detecting) points from Stages::detect_free_surface.
     void
     set_free_surface_fraction(const std::pair<unsigned int, unsigned int> &n)

@@ -11,15 +11,13 @@ namespace fsgmpm
   namespace EnergyBalance
   {
     template <int dim>
-    void
-    compute_energies(const ParticleStore<dim>                     &particles,
-                     const std::vector<std::unique_ptr<Material>> &materials,
-                     const Membrane<dim>                          *membrane,
-                     const Tensor<1, dim>                         &gravity,
-                     Monitors                                     &monitors,
-                     const MPI_Comm                                communicator,
-                     const NodalFields<dim>                       *nodes,
-                     const std::vector<std::uint8_t> *counted_nodes)
+    std::vector<CompensatedSum>
+    local_energies(const ParticleStore<dim>                     &particles,
+                   const std::vector<std::unique_ptr<Material>> &materials,
+                   const Membrane<dim>                          *membrane,
+                   const Tensor<1, dim>                         &gravity,
+                   const NodalFields<dim>                       *nodes,
+                   const std::vector<std::uint8_t>              *counted_nodes)
     {
       const auto                        &cells = particles.occupied_cells;
       std::vector<std::array<double, 3>> partial(cells.size());
@@ -67,13 +65,40 @@ namespace fsgmpm
               sums.back().add(0.5 * nodes->mass[i]
                               * nodes->velocity[i].norm_square());
         }
-      const std::vector<double> energies
-        = sum_over_processes(sums, communicator);
-      monitors.kinetic_energy   = energies[0];
-      monitors.strain_energy    = energies[1];
-      monitors.potential_energy = energies[2];
-      if (nodes)
-        monitors.grid_kinetic_energy = energies[3];
+      return sums;
+    }
+
+
+
+    void
+    set_energies(const ArrayView<const double> &totals, Monitors &monitors)
+    {
+      Assert(totals.size() == 3 || totals.size() == 4, ExcInternalError());
+      monitors.kinetic_energy   = totals[0];
+      monitors.strain_energy    = totals[1];
+      monitors.potential_energy = totals[2];
+      if (totals.size() == 4)
+        monitors.grid_kinetic_energy = totals[3];
+    }
+
+
+
+    template <int dim>
+    void
+    compute_energies(const ParticleStore<dim>                     &particles,
+                     const std::vector<std::unique_ptr<Material>> &materials,
+                     const Membrane<dim>                          *membrane,
+                     const Tensor<1, dim>                         &gravity,
+                     Monitors                                     &monitors,
+                     const MPI_Comm                                communicator,
+                     const NodalFields<dim>                       *nodes,
+                     const std::vector<std::uint8_t> *counted_nodes)
+    {
+      const std::vector<double> totals = sum_over_processes(
+        local_energies(
+          particles, materials, membrane, gravity, nodes, counted_nodes),
+        communicator);
+      set_energies(make_array_view(totals), monitors);
     }
 
 
@@ -115,6 +140,13 @@ namespace fsgmpm
     }
 
 #define FSGMPM_INSTANTIATE(dim)                                           \
+  template std::vector<CompensatedSum> local_energies<dim>(               \
+    const ParticleStore<dim> &,                                           \
+    const std::vector<std::unique_ptr<Material>> &,                       \
+    const Membrane<dim> *,                                                \
+    const Tensor<1, dim> &,                                               \
+    const NodalFields<dim> *,                                             \
+    const std::vector<std::uint8_t> *);                                   \
   template void compute_energies<dim>(                                    \
     const ParticleStore<dim> &,                                           \
     const std::vector<std::unique_ptr<Material>> &,                       \

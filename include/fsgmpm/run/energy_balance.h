@@ -1,7 +1,10 @@
 #ifndef fsgmpm_run_energy_balance_h
 #define fsgmpm_run_energy_balance_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
+
+#include <fsgmpm/base/compensated_sum.h>
 
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/material.h>
@@ -45,6 +48,23 @@ namespace fsgmpm
                      const MPI_Comm          communicator = MPI_COMM_SELF,
                      const NodalFields<dim> *nodes        = nullptr,
                      const std::vector<std::uint8_t> *counted_nodes = nullptr);
+
+    /// This process's part of compute_energies(), compensated (kinetic,
+    /// strain, potential, and with @p nodes the grid's kinetic energy):
+    /// summed over the processes (sum_over_processes(), maybe with other
+    /// sums in the same collective), then stored by set_energies().
+    template <int dim>
+    std::vector<CompensatedSum>
+    local_energies(const ParticleStore<dim>                     &particles,
+                   const std::vector<std::unique_ptr<Material>> &materials,
+                   const Membrane<dim>                          *membrane,
+                   const Tensor<1, dim>                         &gravity,
+                   const NodalFields<dim>          *nodes         = nullptr,
+                   const std::vector<std::uint8_t> *counted_nodes = nullptr);
+
+    /// The totals of local_energies() into @p monitors.
+    void
+    set_energies(const ArrayView<const double> &totals, Monitors &monitors);
 
     /// Books a step's external and damping work and its lost points, and
     /// the dynamic-relaxation ratios of Eq. (30): E_v = grid kinetic
