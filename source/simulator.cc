@@ -27,6 +27,10 @@
 #include <sstream>
 #include <utility>
 
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
+
 namespace fsgmpm
 {
   namespace
@@ -138,6 +142,11 @@ namespace fsgmpm
         else
           MeshGeneration::read_gmsh(params.mesh_file, triangulation);
         grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
+#ifdef __GLIBC__
+        // The mesh's many small blocks are free now; give their pages back
+        // (glibc keeps a freed heap resident otherwise).
+        malloc_trim(0);
+#endif
       }
     else
       grid = std::make_unique<BackgroundGrid<dim>>();
@@ -148,6 +157,9 @@ namespace fsgmpm
       n_fields = std::max(n_fields, body.velocity_field + 1);
     if (n_fields > 1)
       grid->set_velocity_fields(n_fields);
+    // The nodal volumes: read only by the contact and APIC's affine remap.
+    if (n_fields > 1 || params.apic_affine_remap)
+      grid->compute_node_volumes();
 
     // Every boundary id named in the wall conditions must exist.
     std::set<types::boundary_id> mesh_ids;
@@ -274,7 +286,7 @@ namespace fsgmpm
     std::vector<unsigned int> local(grid->n_cells(), 0),
       points_per_cell(grid->n_cells(), 0);
     for (const unsigned int c : particles.occupied_cells)
-      local[c] = particles.cell_end[c] - particles.cell_begin[c];
+      local[c] = particles.cell_end(c) - particles.cell_begin(c);
     Utilities::MPI::sum(make_array_view(std::as_const(local)),
                         comm,
                         make_array_view(points_per_cell));
@@ -467,6 +479,7 @@ namespace fsgmpm
       }
     if (params.use_apic)
       particles.enable_affine_velocity();
+    particles.shrink_to_fit();
     particles.sort_by_cell(grid->n_cells());
   }
 

@@ -316,7 +316,7 @@ namespace fsgmpm
             std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
             for (const unsigned int c : particles.occupied_cells)
               points_per_cell[c]
-                = particles.cell_end[c] - particles.cell_begin[c];
+                = particles.cell_end(c) - particles.cell_begin(c);
             if (in.rows_split())
               Utilities::MPI::sum(points_per_cell,
                                   communicator,

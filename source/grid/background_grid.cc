@@ -43,11 +43,8 @@ namespace fsgmpm
   {
     const unsigned int n = dof_handler.get_triangulation().n_active_cells();
     cell_nodes.resize(n);
-    inverse_edges.resize(n);
-    cell_volume.resize(n);
     boundary_faces.clear();
     node_positions.resize(dof_handler.n_dofs());
-    node_volume.assign(dof_handler.n_dofs(), 0.);
 
     min_altitude_global = std::numeric_limits<double>::max();
     max_altitude_global = 0;
@@ -56,10 +53,6 @@ namespace fsgmpm
         lower_corner[d] = std::numeric_limits<double>::max();
         upper_corner[d] = -std::numeric_limits<double>::max();
       }
-
-    double factorial = 1;
-    for (unsigned int d = 2; d <= dim; ++d)
-      factorial *= d;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -78,27 +71,22 @@ namespace fsgmpm
               }
           }
 
-        // Edge matrix E with columns x_k - x_0; lambda_{1..dim} =
-        // E^{-1}(x-x_0).
+        // A degenerate cell has no inverse edge matrix: refuse it here,
+        // once, so that no loop meets it.
         Tensor<2, dim>   edges;
-        const Point<dim> x0 = cell->vertex(0);
+        const Point<dim> x0    = cell->vertex(0);
+        double           scale = 1;
         for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int d = 0; d < dim; ++d)
-            edges[d][k] = cell->vertex(k + 1)[d] - x0[d];
-        const double det   = determinant(edges);
-        double       scale = 1;
-        for (unsigned int k = 0; k < dim; ++k)
-          scale *= (cell->vertex(k + 1) - x0).norm();
-        AssertThrow(std::abs(det) > 1e-12 * scale,
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              edges[d][k] = cell->vertex(k + 1)[d] - x0[d];
+            scale *= (cell->vertex(k + 1) - x0).norm();
+          }
+        AssertThrow(std::abs(determinant(edges)) > 1e-12 * scale,
                     ExcMessage("Background-grid cell " + std::to_string(c)
                                + " near "
                                + Utilities::to_string(cell->center()[0])
                                + " is degenerate (zero volume)."));
-        inverse_edges[c] = invert(edges);
-
-        cell_volume[c] = std::abs(det) / factorial;
-        for (const unsigned int node : cell_nodes[c])
-          node_volume[node] += cell_volume[c] / n_vertices;
 
         const double hmin   = min_altitude(c);
         min_altitude_global = std::min(min_altitude_global, hmin);
@@ -180,12 +168,9 @@ namespace fsgmpm
     // across the whole domain once per colour, missing the cache at every
     // cell (p2g 2.4 times slower in the 3D dam break); a block's cells are
     // neighbours. 16 to 128 cells measured alike.
-    const unsigned int cells_per_block = 32;
+    // (cells_per_block = 32)
     const unsigned int n_blocks
       = (n_cells() + cells_per_block - 1) / cells_per_block;
-    cell_block.resize(n_cells());
-    for (unsigned int c = 0; c < n_cells(); ++c)
-      cell_block[c] = c / cells_per_block;
 
     // Greedy colouring of the block-node-block graph, in block order so that
     // the result is deterministic.
@@ -193,8 +178,8 @@ namespace fsgmpm
     for (unsigned int c = 0; c < n_cells(); ++c)
       for (const unsigned int node : cell_nodes[c])
         if (node_blocks[node].empty()
-            || node_blocks[node].back() != cell_block[c])
-          node_blocks[node].push_back(cell_block[c]);
+            || node_blocks[node].back() != cell_block(c))
+          node_blocks[node].push_back(cell_block(c));
 
     block_colour.assign(n_blocks, invalid);
     n_colours = 0;
@@ -217,6 +202,23 @@ namespace fsgmpm
           ++colour;
         block_colour[b] = colour;
         n_colours       = std::max(n_colours, colour + 1);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::compute_node_volumes()
+  {
+    if (node_volume.size() == n_nodes())
+      return;
+    node_volume.assign(n_nodes(), 0.);
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      {
+        const double volume = cell_volume(c);
+        for (const unsigned int node : cell_nodes[c])
+          node_volume[node] += volume / n_vertices;
       }
   }
 
@@ -259,12 +261,9 @@ namespace fsgmpm
     };
     replicate(node_positions);
     replicate(node_volume);
-    replicate(inverse_edges);
-    replicate(cell_volume);
     replicate(boundary_faces);
     replicate(cell_nodes);
     replicate(cell_neighbors);
-    replicate(cell_block);
     replicate(block_colour);
     n_colours = n * nk;
     for (unsigned int f = 1; f < n; ++f)
@@ -275,7 +274,6 @@ namespace fsgmpm
           for (auto &neighbor : cell_neighbors[c])
             if (neighbor != invalid)
               neighbor += f * nc;
-          cell_block[c] += f * nb;
         }
     const unsigned int n_boundary_faces = boundary_faces.size() / n;
     for (unsigned int f = 1; f < n; ++f)
@@ -350,11 +348,8 @@ namespace fsgmpm
     broadcast_vector(node_positions, communicator, root);
     broadcast_vector(node_volume, communicator, root);
     broadcast_vector(cell_nodes, communicator, root);
-    broadcast_vector(inverse_edges, communicator, root);
-    broadcast_vector(cell_volume, communicator, root);
     broadcast_vector(cell_neighbors, communicator, root);
     broadcast_vector(boundary_faces, communicator, root);
-    broadcast_vector(cell_block, communicator, root);
     broadcast_vector(block_colour, communicator, root);
   }
 
@@ -367,11 +362,8 @@ namespace fsgmpm
     return MemoryConsumption::memory_consumption(node_positions)
            + MemoryConsumption::memory_consumption(node_volume)
            + MemoryConsumption::memory_consumption(cell_nodes)
-           + MemoryConsumption::memory_consumption(inverse_edges)
-           + MemoryConsumption::memory_consumption(cell_volume)
            + MemoryConsumption::memory_consumption(cell_neighbors)
            + boundary_faces.capacity() * sizeof(BoundaryFace)
-           + MemoryConsumption::memory_consumption(cell_block)
            + MemoryConsumption::memory_consumption(block_colour);
   }
 

@@ -28,9 +28,10 @@ namespace fsgmpm
   {
     // Linear simplex: grad v = sum_i v_i (x) grad N_i is constant in the
     // cell; omega_z = dv_y/dx - dv_x/dy.
-    const unsigned int c     = particles.cell[p];
-    const auto         grad  = grid.shape_gradients(c);
-    double             omega = 0;
+    const unsigned int      c        = particles.cell[p];
+    const CellGeometry<dim> geometry = grid.geometry(c);
+    const auto              grad     = geometry.shape_gradients();
+    double                  omega    = 0;
     for (unsigned int k = 0; k < dim + 1; ++k)
       {
         const auto &v = nodes.velocity[grid.cell_nodes[c][k]];
@@ -46,7 +47,7 @@ namespace fsgmpm
     if (Stages::projected_stress(grid,
                                  nodes,
                                  c,
-                                 grid.barycentric(c, particles.position[p]),
+                                 geometry.barycentric(particles.position[p]),
                                  s_projected))
       projected = -trace(s_projected) / dim;
     return {{omega, projected}};

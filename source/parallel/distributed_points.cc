@@ -160,7 +160,7 @@ namespace fsgmpm
         flag[p] = (partition.owner(particles.cell[p]) != partition.rank());
       particles.remove_flagged(flag);
       particles.ghost.clear();
-      particles.sort_by_cell(particles.cell_begin.size());
+      particles.sort_by_cell(particles.n_cells());
     }
 
 
@@ -177,8 +177,8 @@ namespace fsgmpm
         for (const unsigned int q : partition.ghost_holders(c))
           {
             std::vector<char> &buffer = send[q];
-            for (unsigned int p = particles.cell_begin[c];
-                 p < particles.cell_end[c];
+            for (unsigned int p = particles.cell_begin(c);
+                 p < particles.cell_end(c);
                  ++p)
               pack(particles, p, buffer);
           }
@@ -200,17 +200,15 @@ namespace fsgmpm
       for (const auto &[rank, buffer] : received)
         unpack(buffer, 1, particles);
       std::vector<unsigned int> ghost_cells;
-      for (unsigned int p = n_owned; p < particles.size(); ++p)
+      for (unsigned int p = n_owned; p < particles.size();)
         {
-          const unsigned int c = particles.cell[p];
-          if (p == n_owned || particles.cell[p - 1] != c)
-            {
-              Assert(particles.cell_end[c] == particles.cell_begin[c],
-                     ExcInternalError());
-              ghost_cells.push_back(c);
-              particles.cell_begin[c] = p;
-            }
-          particles.cell_end[c] = p + 1;
+          const unsigned int c   = particles.cell[p];
+          unsigned int       end = p + 1;
+          while (end < particles.size() && particles.cell[end] == c)
+            ++end;
+          particles.append_cell_range(c, p, end);
+          ghost_cells.push_back(c);
+          p = end;
         }
       std::sort(ghost_cells.begin(), ghost_cells.end());
       std::vector<unsigned int> occupied;
@@ -243,11 +241,9 @@ namespace fsgmpm
       std::vector<unsigned int> owned_cells;
       owned_cells.reserve(particles.occupied_cells.size());
       for (const unsigned int c : particles.occupied_cells)
-        if (particles.cell_begin[c] < n_owned)
+        if (particles.cell_begin(c) < n_owned)
           owned_cells.push_back(c);
-        else
-          particles.cell_begin[c] = particles.cell_end[c] = 0;
-      particles.occupied_cells.swap(owned_cells);
+      particles.keep_cell_ranges(owned_cells);
       auto cut = [n_owned](auto &v) { v.resize(n_owned); };
       cut(particles.position);
       cut(particles.velocity);
@@ -316,7 +312,7 @@ namespace fsgmpm
         particles.remove_flagged(flag);
       for (const auto &[rank, buffer] : received)
         unpack(buffer, 0, particles);
-      particles.sort_by_cell(particles.cell_begin.size());
+      particles.sort_by_cell(particles.n_cells());
       return global[1];
     }
 

@@ -141,7 +141,7 @@ namespace fsgmpm
     unsigned int added = 0, overlapped = 0;
     for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
       {
-        const double v = grid.cell_volume[c] / ref.size();
+        const double v = grid.cell_volume(c) / ref.size();
         for (const auto &lambda : ref)
           {
             const Point<dim> x = grid.position(c, lambda);

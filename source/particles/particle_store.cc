@@ -1,3 +1,5 @@
+#include <deal.II/base/exceptions.h>
+
 #include <fsgmpm/particles/particle_store.h>
 
 #include <algorithm>
@@ -48,14 +50,21 @@ namespace fsgmpm
   template <int dim>
   template <typename T>
   void
-  ParticleStore<dim>::permute(std::vector<T>                  &v,
-                              const std::vector<unsigned int> &order)
+  ParticleStore<dim>::permute(std::vector<T> &v) const
   {
-    value_scratch.resize(sizeof(T) * v.size());
-    T *tmp = reinterpret_cast<T *>(value_scratch.data());
-    for (unsigned int i = 0; i < order.size(); ++i)
-      tmp[i] = v[order[i]];
-    std::memcpy(static_cast<void *>(v.data()), tmp, sizeof(T) * v.size());
+    // Along each cycle s -> order[s] -> ...: v[j] takes v[order[j]], which
+    // is still unwritten; the cycle closes with the saved v[s].
+    for (const unsigned int s : cycle_starts)
+      {
+        const T      first = v[s];
+        unsigned int j     = s;
+        for (unsigned int k = order_scratch[j]; k != s; k = order_scratch[j])
+          {
+            v[j] = v[k];
+            j    = k;
+          }
+        v[j] = first;
+      }
   }
 
 
@@ -65,71 +74,105 @@ namespace fsgmpm
   ParticleStore<dim>::sort_by_cell(const unsigned int n_cells)
   {
     const unsigned int n = size();
-    if (cell_begin.size() != n_cells)
+    if (slot_of_cell.size() != n_cells)
       {
-        cell_begin.assign(n_cells, 0);
-        cell_end.assign(n_cells, 0);
+        slot_of_cell.assign(n_cells, invalid_slot);
         occupied_cells.clear();
       }
-    // Empty the cells of the last sort, then count into cell_end and list
-    // the occupied cells as they are met.
+    // Empty the cells of the last sort, then list the occupied cells as
+    // they are met and count their points (in slot_begin, by slot).
     for (const unsigned int c : occupied_cells)
-      cell_begin[c] = cell_end[c] = 0;
+      slot_of_cell[c] = invalid_slot;
     occupied_cells.clear();
+    slot_begin.clear();
     bool sorted = true;
     for (unsigned int p = 0; p < n; ++p)
       {
-        if (cell_end[cell[p]]++ == 0)
-          occupied_cells.push_back(cell[p]);
+        unsigned int &j = slot_of_cell[cell[p]];
+        if (j == invalid_slot)
+          {
+            j = occupied_cells.size();
+            occupied_cells.push_back(cell[p]);
+            slot_begin.push_back(0);
+          }
+        ++slot_begin[j];
         sorted = sorted
                  && (p == 0 || cell[p - 1] < cell[p]
                      || (cell[p - 1] == cell[p] && id[p - 1] < id[p]));
       }
     // Met in point order: ascending already when the points are sorted.
+    // Otherwise sort the cells and renumber their slots, counts along.
     if (!sorted)
-      std::sort(occupied_cells.begin(), occupied_cells.end());
-    unsigned int start = 0;
-    for (const unsigned int c : occupied_cells)
       {
-        cell_begin[c] = start;
-        start += cell_end[c];
-        cell_end[c] = sorted ? start : cell_begin[c];
+        std::sort(occupied_cells.begin(), occupied_cells.end());
+        slot_cursor.resize(occupied_cells.size());
+        for (unsigned int j = 0; j < occupied_cells.size(); ++j)
+          slot_cursor[j] = slot_begin[slot_of_cell[occupied_cells[j]]];
+        for (unsigned int j = 0; j < occupied_cells.size(); ++j)
+          {
+            slot_of_cell[occupied_cells[j]] = j;
+            slot_begin[j]                   = slot_cursor[j];
+          }
       }
+    unsigned int start = 0;
+    for (unsigned int &begin : slot_begin)
+      {
+        const unsigned int count = begin;
+        begin                    = start;
+        start += count;
+      }
+    slot_end.resize(slot_begin.size());
+    for (unsigned int j = 0; j + 1 < slot_begin.size(); ++j)
+      slot_end[j] = slot_begin[j + 1];
+    if (!slot_end.empty())
+      slot_end.back() = n;
     if (sorted)
       return;
 
-    // Counting sort into the occupied cells; cell_end runs from cell_begin
-    // to its final value.
+    // Counting sort into the occupied cells.
+    slot_cursor = slot_begin;
     order_scratch.resize(n);
     for (unsigned int p = 0; p < n; ++p)
-      order_scratch[cell_end[cell[p]]++] = p;
+      order_scratch[slot_cursor[slot_of_cell[cell[p]]]++] = p;
     // Inside each cell by id: the points that stayed keep their order and
     // the few that came in are inserted.
-    for (const unsigned int c : occupied_cells)
-      for (unsigned int i = cell_begin[c] + 1; i < cell_end[c]; ++i)
+    for (unsigned int j = 0; j < slot_begin.size(); ++j)
+      for (unsigned int i = slot_begin[j] + 1; i < slot_end[j]; ++i)
         {
           const unsigned int q = order_scratch[i];
-          unsigned int       j = i;
-          for (; j > cell_begin[c] && id[order_scratch[j - 1]] > id[q]; --j)
-            order_scratch[j] = order_scratch[j - 1];
-          order_scratch[j] = q;
+          unsigned int       k = i;
+          for (; k > slot_begin[j] && id[order_scratch[k - 1]] > id[q]; --k)
+            order_scratch[k] = order_scratch[k - 1];
+          order_scratch[k] = q;
         }
+    // The cycles of the permutation, once for all arrays.
+    cycle_starts.clear();
+    {
+      std::vector<bool> done(n, false);
+      for (unsigned int i = 0; i < n; ++i)
+        if (!done[i] && order_scratch[i] != i)
+          {
+            cycle_starts.push_back(i);
+            for (unsigned int k = i; !done[k]; k = order_scratch[k])
+              done[k] = true;
+          }
+    }
 
-    permute(position, order_scratch);
-    permute(velocity, order_scratch);
-    permute(stress, order_scratch);
-    permute(mass, order_scratch);
-    permute(volume, order_scratch);
-    permute(reference_volume, order_scratch);
-    permute(cell, order_scratch);
-    permute(material_id, order_scratch);
-    permute(body_id, order_scratch);
-    permute(free_surface, order_scratch);
-    permute(id, order_scratch);
+    permute(position);
+    permute(velocity);
+    permute(stress);
+    permute(mass);
+    permute(volume);
+    permute(reference_volume);
+    permute(cell);
+    permute(material_id);
+    permute(body_id);
+    permute(free_surface);
+    permute(id);
     if (!ghost.empty())
-      permute(ghost, order_scratch);
+      permute(ghost);
     if (with_affine_velocity)
-      permute(affine_velocity, order_scratch);
+      permute(affine_velocity);
   }
 
 
@@ -170,6 +213,68 @@ namespace fsgmpm
 
 
   template <int dim>
+  void
+  ParticleStore<dim>::append_cell_range(const unsigned int c,
+                                        const unsigned int begin,
+                                        const unsigned int end)
+  {
+    AssertThrow(slot_of_cell[c] == invalid_slot,
+                ExcMessage("A cell's points must be appended in one run."));
+    slot_of_cell[c] = slot_begin.size();
+    slot_begin.push_back(begin);
+    slot_end.push_back(end);
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::keep_cell_ranges(const std::vector<unsigned int> &cells)
+  {
+    // Renumber the kept cells' slots in their order (the slots of a sort).
+    slot_cursor.resize(2 * cells.size());
+    for (unsigned int j = 0; j < cells.size(); ++j)
+      {
+        slot_cursor[2 * j]     = cell_begin(cells[j]);
+        slot_cursor[2 * j + 1] = cell_end(cells[j]);
+      }
+    for (const unsigned int c : occupied_cells)
+      slot_of_cell[c] = invalid_slot;
+    slot_begin.resize(cells.size());
+    slot_end.resize(cells.size());
+    for (unsigned int j = 0; j < cells.size(); ++j)
+      {
+        slot_of_cell[cells[j]] = j;
+        slot_begin[j]          = slot_cursor[2 * j];
+        slot_end[j]            = slot_cursor[2 * j + 1];
+      }
+    occupied_cells = cells;
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::shrink_to_fit()
+  {
+    position.shrink_to_fit();
+    velocity.shrink_to_fit();
+    affine_velocity.shrink_to_fit();
+    stress.shrink_to_fit();
+    mass.shrink_to_fit();
+    volume.shrink_to_fit();
+    reference_volume.shrink_to_fit();
+    cell.shrink_to_fit();
+    material_id.shrink_to_fit();
+    body_id.shrink_to_fit();
+    free_surface.shrink_to_fit();
+    id.shrink_to_fit();
+    ghost.shrink_to_fit();
+  }
+
+
+
+  template <int dim>
   double
   ParticleStore<dim>::bytes_per_particle() const
   {
@@ -186,10 +291,15 @@ namespace fsgmpm
         + (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t)
         + free_surface.capacity() + ghost.capacity()
         + id.capacity() * sizeof(unsigned int)
-        + order_scratch.capacity() * sizeof(unsigned int)
-        + value_scratch.capacity();
+        + (occupied_cells.capacity() + slot_of_cell.capacity()
+           + slot_begin.capacity() + slot_end.capacity()
+           + order_scratch.capacity() + slot_cursor.capacity()
+           + cycle_starts.capacity())
+            * sizeof(unsigned int);
     return bytes / size();
   }
+
+
 
   template class ParticleStore<2>;
   template class ParticleStore<3>;

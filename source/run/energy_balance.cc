@@ -28,8 +28,8 @@ namespace fsgmpm
             {
               const unsigned int c = cells[i];
               double             k = 0, s = 0, g = 0;
-              for (unsigned int p = particles.cell_begin[c];
-                   p < particles.cell_end[c];
+              for (unsigned int p = particles.cell_begin(c);
+                   p < particles.cell_end(c);
                    ++p)
                 {
                   k += 0.5 * particles.mass[p]

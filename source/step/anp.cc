@@ -1,6 +1,8 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <optional>
+
 namespace fsgmpm
 {
   namespace Stages
@@ -49,8 +51,8 @@ namespace fsgmpm
               }
           pV_sum = w_sum = 0;
         };
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           {
             const unsigned int m = particles.material_id[p];
@@ -76,8 +78,9 @@ namespace fsgmpm
         // once per run of points of the same material.
         unsigned int run_material = numbers::invalid_unsigned_int;
         double       p_bar        = 0;
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        std::optional<CellGeometry<dim>> geometry;
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           {
             const unsigned int m = particles.material_id[p];
@@ -85,8 +88,11 @@ namespace fsgmpm
               continue;
             if (options[m].anp_interpolate)
               {
-                const auto lambda = grid.barycentric(c, particles.position[p]);
-                p_bar             = 0;
+                if (!geometry)
+                  geometry.emplace(grid.geometry(c));
+                const auto lambda
+                  = geometry->barycentric(particles.position[p]);
+                p_bar = 0;
                 for (unsigned int k = 0; k < dim + 1; ++k)
                   p_bar
                     += lambda[k] * smoothing.average(m, grid.cell_nodes[c][k]);

@@ -15,6 +15,12 @@ namespace fsgmpm
     {
       if (grid.n_velocity_fields() == 1)
         return;
+      AssertThrow(
+        grid.node_volume.size() == grid.n_nodes(),
+        ExcMessage(
+          "The multi-field contact reads the grid's nodal volumes: call "
+          "BackgroundGrid::compute_node_volumes() once "
+          "before the first step."));
       nodes.use(nodes.contact_normal);
       nodes.use(nodes.contact_volume);
       for (const unsigned int i : nodes.active_nodes)
@@ -51,13 +57,14 @@ namespace fsgmpm
               const unsigned int cf = grid.cell_in_field(c, f);
               lower_copy_occupied
                 = lower_copy_occupied
-                  || particles.cell_end[cf] > particles.cell_begin[cf];
+                  || particles.cell_end(cf) > particles.cell_begin(cf);
             }
           if (lower_copy_occupied)
             continue;
-          const unsigned int cb   = grid.cell_in_field(c, 0);
-          const auto         grad = grid.shape_gradients(cb);
-          Tensor<1, dim>     gradient;
+          const unsigned int      cb       = grid.cell_in_field(c, 0);
+          const CellGeometry<dim> geometry = grid.geometry(cb);
+          const auto              grad     = geometry.shape_gradients();
+          Tensor<1, dim>          gradient;
           for (unsigned int k = 0; k < dim + 1; ++k)
             {
               const unsigned int i = grid.cell_nodes[cb][k];
@@ -65,7 +72,7 @@ namespace fsgmpm
             }
           for (unsigned int k = 0; k < dim + 1; ++k)
             nodes.contact_normal[grid.cell_nodes[cb][k]]
-              += grid.cell_volume[cb] * gradient;
+              += geometry.volume * gradient;
         }
     }
 

@@ -31,24 +31,27 @@ namespace fsgmpm
         {
           phi.assign(grid.n_nodes(), 0.);
           vol.assign(grid.n_nodes(), 0.);
-          smoothing.cell_counted.assign(grid.n_base_cells(), 0u);
         }
       for (const unsigned int i : nodes.active_nodes)
         phi[grid.base_node(i)] = vol[grid.base_node(i)] = 0.;
-      const unsigned int stamp = ++smoothing.cell_count_stamp;
-      // Copies of a cell have different colours, so the check-and-set of
-      // cell_counted and the sums on base nodes are race free.
+      // Copies of a cell have different colours, so the sums on base nodes
+      // are race free; the colours of field f come after those of the
+      // fields before it, so a cell counts its volume unless a copy in a
+      // lower field is occupied.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        const auto         share = CellLoops::volume_shares(grid, particles, c);
-        const unsigned int base_cell = grid.cell_in_field(c, 0);
-        const bool         first = (smoothing.cell_counted[base_cell] != stamp);
-        smoothing.cell_counted[base_cell] = stamp;
+        const auto share = CellLoops::volume_shares(grid, particles, c);
+        bool       first = true;
+        for (unsigned int f = 0; f < grid.field_of_cell(c); ++f)
+          first = first
+                  && particles.occupied_slot(grid.cell_in_field(c, f))
+                       == numbers::invalid_unsigned_int;
+        const double cell_volume = first ? grid.cell_volume(c) : 0.;
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int i = grid.base_node(grid.cell_nodes[c][k]);
             phi[i] += share[k];
             if (first)
-              vol[i] += grid.cell_volume[c] / (dim + 1);
+              vol[i] += cell_volume / (dim + 1);
           }
       });
       // Divide each base node once (zeroing its volume marks it done).
@@ -73,9 +76,10 @@ namespace fsgmpm
         [&](const unsigned int b, const unsigned int e) {
           for (unsigned int ci = b; ci < e; ++ci)
             {
-              const unsigned int c = particles.occupied_cells[ci];
-              for (unsigned int p = particles.cell_begin[c];
-                   p < particles.cell_end[c];
+              const unsigned int      c        = particles.occupied_cells[ci];
+              const CellGeometry<dim> geometry = grid.geometry(c);
+              for (unsigned int p = particles.cell_begin(c);
+                   p < particles.cell_end(c);
                    ++p)
                 {
                   const MaterialOptions &o = options[particles.material_id[p]];
@@ -83,7 +87,7 @@ namespace fsgmpm
                     continue;
                   ++flagged[ci].second;
                   const auto lambda
-                    = grid.barycentric(c, particles.position[p]);
+                    = geometry.barycentric(particles.position[p]);
                   double phi_p = 0;
                   for (unsigned int k = 0; k < dim + 1; ++k)
                     phi_p

@@ -24,18 +24,19 @@ namespace fsgmpm
       const bool  blend = !apic && pic_fraction > 0;
       const auto &field = apic ? nodes.velocity : nodes.acceleration;
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        Tensor<1, dim> f[dim + 1], v[dim + 1];
+        Tensor<1, dim>          f[dim + 1], v[dim + 1];
+        const CellGeometry<dim> geometry = grid.geometry(c);
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             f[k] = field[grid.cell_nodes[c][k]];
             if (blend)
               v[k] = nodes.velocity[grid.cell_nodes[c][k]];
           }
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           {
-            const auto     lambda = grid.barycentric(c, particles.position[p]);
+            const auto     lambda = geometry.barycentric(particles.position[p]);
             Tensor<1, dim> value;
             for (unsigned int k = 0; k < dim + 1; ++k)
               value += lambda[k] * f[k];
@@ -65,8 +66,8 @@ namespace fsgmpm
       if (!particles.has_affine_velocity())
         return;
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           particles.affine_velocity[p] = smoothing.cell_velocity_gradient(c);
       });

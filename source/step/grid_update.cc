@@ -62,14 +62,14 @@ namespace fsgmpm
           const double m = nodes.mass[i];
           if (m <= 0)
             continue;
-          nodes.external_force[i] += m * gravity;
+          // F_ext of Eq. (4): gravity, m_i g.
+          const Tensor<1, dim> external = m * gravity;
           // v_old is the unconstrained mapped velocity, so that the
           // acceleration a = (v_new - v_old)/dt carries the wall's effect
           // back to the particles in Eq. (19).
           const Tensor<1, dim> v_old = nodes.momentum[i] / m;
 
-          const Tensor<1, dim> unbalanced
-            = nodes.external_force[i] - nodes.internal_force[i];
+          const Tensor<1, dim> unbalanced = external - nodes.internal_force[i];
           // Local non-viscous damping: opposes the motion with a fraction of
           // the unbalanced force, component by component.
           Tensor<1, dim> damping;
@@ -95,12 +95,12 @@ namespace fsgmpm
           if (counted_nodes != nullptr && (*counted_nodes)[i] == 0)
             continue;
           const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
-          r.external_work_increment.add(dt * (nodes.external_force[i] * v_mid));
+          r.external_work_increment.add(dt * (external * v_mid));
           if (m >= light)
             r.damping_work_increment.add(-dt * (damping * v_mid));
 
           Tensor<1, dim> free_unbalanced = unbalanced;
-          Tensor<1, dim> free_external   = nodes.external_force[i];
+          Tensor<1, dim> free_external   = external;
           constraints.project_out(i, free_unbalanced);
           constraints.project_out(i, free_external);
           r.unbalanced_norm_sq.add(free_unbalanced.norm_square());

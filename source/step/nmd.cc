@@ -48,8 +48,8 @@ namespace fsgmpm
                   }
               w_sum = 0;
             };
-            for (unsigned int p = particles.cell_begin[c];
-                 p < particles.cell_end[c];
+            for (unsigned int p = particles.cell_begin(c);
+                 p < particles.cell_end(c);
                  ++p)
               {
                 const unsigned int m = particles.material_id[p];

@@ -28,14 +28,15 @@ namespace fsgmpm
         double         m[dim + 1] = {};
         Tensor<1, dim> mv[dim + 1];
         // Eq. (3): F_int,i = sum_p V_p sigma_p grad N_i, constant gradients.
-        Tensor<2, dim> volume_stress;
-        Tensor<2, dim> nodal_volume_stress[dim + 1];
-        double         points_volume = 0;
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        Tensor<2, dim>          volume_stress;
+        Tensor<2, dim>          nodal_volume_stress[dim + 1];
+        double                  points_volume = 0;
+        const CellGeometry<dim> geometry      = grid.geometry(c);
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           {
-            const auto   lambda = grid.barycentric(c, particles.position[p]);
+            const auto   lambda = geometry.barycentric(particles.position[p]);
             const double mp     = particles.mass[p];
             for (unsigned int k = 0; k < dim + 1; ++k)
               {
@@ -68,10 +69,9 @@ namespace fsgmpm
         // With the projection, the points' own part (1 - theta_c) here,
         // the projected part in the second pass.
         if (project)
-          volume_stress *= 1.
-                           - CellLoops::projection_share(points_volume,
-                                                         grid.cell_volume[c]);
-        const auto grad = grid.shape_gradients(c);
+          volume_stress
+            *= 1. - CellLoops::projection_share(points_volume, geometry.volume);
+        const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int n = grid.cell_nodes[c][k];
@@ -81,7 +81,7 @@ namespace fsgmpm
             if (project)
               {
                 nodes.volume_stress[n] += nodal_volume_stress[k];
-                nodes.support_volume[n] += grid.cell_volume[c] / (dim + 1);
+                nodes.support_volume[n] += geometry.volume / (dim + 1);
               }
           }
       });
@@ -101,8 +101,9 @@ namespace fsgmpm
         Tensor<2, dim> cell_stress;
         for (const unsigned int n : grid.cell_nodes[c])
           cell_stress += nodes.volume_stress[n] / nodes.support_volume[n];
-        cell_stress *= theta * grid.cell_volume[c] / (dim + 1);
-        const auto grad = grid.shape_gradients(c);
+        const CellGeometry<dim> geometry = grid.geometry(c);
+        cell_stress *= theta * geometry.volume / (dim + 1);
+        const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           nodes.internal_force[grid.cell_nodes[c][k]] += cell_stress * grad[k];
       });

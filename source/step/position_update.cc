@@ -21,17 +21,18 @@ namespace fsgmpm
         [&](const unsigned int b, const unsigned int e) {
           for (unsigned int i = b; i < e; ++i)
             {
-              const unsigned int c = cells[i];
-              Tensor<1, dim>     v[dim + 1];
+              const unsigned int      c        = cells[i];
+              const CellGeometry<dim> geometry = grid.geometry(c);
+              Tensor<1, dim>          v[dim + 1];
               for (unsigned int k = 0; k < dim + 1; ++k)
                 v[k] = nodes.velocity[grid.cell_nodes[c][k]];
               double max_disp = 0;
-              for (unsigned int p = particles.cell_begin[c];
-                   p < particles.cell_end[c];
+              for (unsigned int p = particles.cell_begin(c);
+                   p < particles.cell_end(c);
                    ++p)
                 {
                   const auto lambda
-                    = grid.barycentric(c, particles.position[p]);
+                    = geometry.barycentric(particles.position[p]);
                   Tensor<1, dim> dx;
                   for (unsigned int k = 0; k < dim + 1; ++k)
                     dx += lambda[k] * v[k];
@@ -39,7 +40,7 @@ namespace fsgmpm
                   particles.position[p] += dx;
                   max_disp = std::max(max_disp, dx.norm_square());
                 }
-              cell_ratio[i] = std::sqrt(max_disp) / grid.min_altitude(c);
+              cell_ratio[i] = std::sqrt(max_disp) / geometry.min_altitude();
             }
         },
         16);

@@ -2,6 +2,8 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <optional>
+
 namespace fsgmpm
 {
   namespace Stages
@@ -14,9 +16,21 @@ namespace fsgmpm
       const unsigned int      n = particles.size();
       CellLoops::parallel_range(
         n, [&](const unsigned int b, const unsigned int e) {
+          // The points are still in cell order: the geometry of a cell
+          // once for its points.
+          unsigned int cached = BackgroundGrid<dim>::invalid;
+          std::optional<CellGeometry<dim>> geometry;
           for (unsigned int p = b; p < e; ++p)
-            particles.cell[p]
-              = locator.locate(particles.position[p], particles.cell[p]);
+            {
+              const unsigned int c = particles.cell[p];
+              if (c != cached)
+                {
+                  geometry.emplace(grid.geometry(c));
+                  cached = c;
+                }
+              particles.cell[p]
+                = locator.locate(particles.position[p], c, *geometry);
+            }
         });
 
       unsigned int lost = 0;

@@ -32,6 +32,11 @@ namespace fsgmpm
       std::vector<double> &filled_volume = filled_volume_scratch;
       if (affine)
         {
+          AssertThrow(grid.node_volume.size() == grid.n_nodes(),
+                      ExcMessage(
+                        "The affine remap reads the grid's nodal volumes: call "
+                        "BackgroundGrid::compute_node_volumes() once "
+                        "before the first step."));
           updated_velocity.resize(grid.n_nodes());
           filled_volume.resize(grid.n_nodes());
           for (const unsigned int i : nodes.active_nodes)
@@ -44,12 +49,13 @@ namespace fsgmpm
         nodes.momentum[i] = Tensor<1, dim>();
 
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        Tensor<1, dim> mv[dim + 1];
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        Tensor<1, dim>          mv[dim + 1];
+        const CellGeometry<dim> geometry = grid.geometry(c);
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           {
-            const auto lambda = grid.barycentric(c, particles.position[p]);
+            const auto lambda = geometry.barycentric(particles.position[p]);
             for (unsigned int k = 0; k < dim + 1; ++k)
               mv[k] += (lambda[k] * particles.mass[p]) * particles.velocity[p];
           }

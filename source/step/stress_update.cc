@@ -3,6 +3,7 @@
 #include <fsgmpm/step/stages.h>
 
 #include <cmath>
+#include <optional>
 
 namespace fsgmpm
 {
@@ -50,9 +51,12 @@ namespace fsgmpm
         // Before any volume changes: the share p2g used.
         const double theta
           = per_point ? CellLoops::projection_share(grid, particles, c) : 0.;
+        std::optional<CellGeometry<dim>> geometry;
+        if (per_point)
+          geometry.emplace(grid.geometry(c));
         thread_local std::vector<PointKinematics> kinematics;
-        const unsigned int begin = particles.cell_begin[c];
-        const unsigned int end   = particles.cell_end[c];
+        const unsigned int begin = particles.cell_begin(c);
+        const unsigned int end   = particles.cell_end(c);
         kinematics.assign(end - begin, cell_kin);
         // The volumetric strain rate and its exponential are those of the
         // cell and material unless every point has its own kinematics: one
@@ -71,7 +75,7 @@ namespace fsgmpm
                     smoothing,
                     c,
                     theta,
-                    grid.barycentric(c, particles.position[p])));
+                    geometry->barycentric(particles.position[p])));
                 if (options[m].nmd)
                   {
                     // Eq. (25): the smoothed rate at the cell centre

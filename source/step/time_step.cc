@@ -27,8 +27,8 @@ namespace fsgmpm
               const unsigned int c     = cells[i];
               const double       h     = grid.min_altitude(c);
               double             speed = 0, stiffness = 0;
-              for (unsigned int p = particles.cell_begin[c];
-                   p < particles.cell_end[c];
+              for (unsigned int p = particles.cell_begin(c);
+                   p < particles.cell_end(c);
                    ++p)
                 {
                   const double    rho = particles.mass[p] / particles.volume[p];

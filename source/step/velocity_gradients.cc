@@ -13,7 +13,7 @@ namespace fsgmpm
                        const ParticleStore<dim>  &particles)
     {
       // Linear simplices: grad v is constant in a cell.
-      smoothing.number_occupied_cells(particles.occupied_cells);
+      smoothing.number_occupied_cells(particles);
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         const auto     grad = grid.shape_gradients(c);
         Tensor<2, dim> L;
@@ -46,7 +46,7 @@ namespace fsgmpm
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         const Tensor<2, dim> share
           = (CellLoops::projection_share(grid, particles, c)
-             * grid.cell_volume[c] / (dim + 1))
+             * grid.cell_volume(c) / (dim + 1))
             * smoothing.cell_velocity_gradient(c);
         for (const unsigned int n : grid.cell_nodes[c])
           Lbar[n] += share;

@@ -94,7 +94,8 @@ namespace
     return s / n_top;
   }
 
-  // Support reaction R = F_int - F_ext summed over the base nodes.
+  // Support reaction R = F_int - F_ext summed over the base nodes (F_ext
+  // = m_i g: the scene has no gravity ramp).
   template <int dim>
   Tensor<1, dim>
   base_reaction(const Simulator<dim> &sim, double &x_abs)
@@ -106,7 +107,8 @@ namespace
       if (sim.get_grid().node_positions[i][1] < 1e-12)
         {
           const Tensor<1, dim> ri
-            = nodes.internal_force[i] - nodes.external_force[i];
+            = nodes.internal_force[i]
+              - nodes.mass[i] * sim.get_parameters().gravity;
           r += ri;
           x_abs += std::abs(ri[0]);
         }

@@ -167,7 +167,8 @@ namespace
     std::mt19937                           rng(11 + dim);
     std::uniform_real_distribution<double> u(0.02, 0.98), m(0.5, 2.), v(-1, 1);
     const auto                             grid = make_grid<dim>();
-    ParticleStore<dim>                     points;
+    grid->compute_node_volumes();
+    ParticleStore<dim> points;
     points.enable_affine_velocity();
     // Points in x_0 < 0.6; their volumes fill that part about once.
     const unsigned int n      = 300 * dim;

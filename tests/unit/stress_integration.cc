@@ -89,7 +89,7 @@ namespace
         l.fill(other);
         l[k] = beta;
         points.emplace_back(grid.position(c, l),
-                            grid.cell_volume[c] / (dim + 1));
+                            grid.cell_volume(c) / (dim + 1));
       }
     return points;
   }
@@ -274,7 +274,7 @@ namespace
     EXPECT_NE(c1, c0);
     EXPECT_NE(c1, BackgroundGrid<dim>::invalid);
 
-    const double                V     = grid->cell_volume[c0] / (dim + 1);
+    const double                V     = grid->cell_volume(c0) / (dim + 1);
     const SymmetricTensor<2, 3> sigma = -1e4 * unit_symmetric_tensor<3>();
     double                      max_gradient = 0;
     for (unsigned int k = 0; k < dim + 1; ++k)
@@ -354,7 +354,7 @@ namespace
         for (unsigned int q = 0; q < 4; ++q)
           {
             points.emplace_back(grid->position(c, random_barycentric<dim>(rng)),
-                                fill * grid->cell_volume[c] / 4);
+                                fill * grid->cell_volume(c) / 4);
           }
       }
     ParticleStore<dim> particles;
@@ -383,8 +383,8 @@ namespace
       {
         const double theta = CellLoops::projection_share(*grid, particles, c);
         shares.insert(static_cast<int>(std::round(10 * theta)));
-        for (unsigned int p = particles.cell_begin[c];
-             p < particles.cell_end[c];
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
              ++p)
           {
             const auto L = Stages::point_velocity_gradient(

@@ -9,6 +9,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <fsgmpm/grid/cell_geometry.h>
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -22,16 +24,9 @@ namespace fsgmpm
    * The simplex background grid of the MPM (triangles in 2D, tetrahedra in
    * 3D) with the per-cell affine data that the explicit step needs.
    *
-   * For linear simplices the shape function of local vertex k at a point x is
-   * its barycentric coordinate lambda_k(x) and its gradient is constant over
-   * the cell. We therefore precompute for every cell the exact inverse A of
-   * the affine map once: its rows are the gradients of vertices 1..dim
-   * (lambda_1..lambda_dim = A (x - x_0); lambda_0 = 1 - sum, whose gradient
-   * is minus theirs), so point location and all particle-grid transfers use
-   * only these gradients and the node positions, never a mapping's Newton
-   * iteration. Negatively oriented cells (Gmsh tets) need no special care:
-   * A is the inverse of the cell's edge matrix whatever the sign of its
-   * determinant.
+   * The grid stores node positions, cell connectivity and neighbours
+   * only; a cell's affine data (inverse edge matrix, volume: CellGeometry)
+   * is computed from its vertices where a loop needs it.
    *
    * Nodes are numbered as the degrees of freedom of a scalar
    * FE_SimplexP<dim>(1) on the triangulation, and cells as its active cells.
@@ -133,53 +128,54 @@ namespace fsgmpm
       return i % n_base_nodes();
     }
 
-    /// Barycentric coordinates of @p x with respect to cell @p c.
+    /// The affine data of cell @p c (inverse edge matrix, volume),
+    /// computed from its vertices. Loops over the points of a cell compute
+    /// it once per cell.
+    CellGeometry<dim>
+    geometry(const unsigned int c) const
+    {
+      return CellGeometry<dim>(vertices(c));
+    }
+
+    /// The positions of the vertices of cell @p c.
+    std::array<Point<dim>, dim + 1>
+    vertices(const unsigned int c) const
+    {
+      std::array<Point<dim>, dim + 1> x;
+      for (unsigned int k = 0; k < n_vertices; ++k)
+        x[k] = node_positions[cell_nodes[c][k]];
+      return x;
+    }
+
+    /// Barycentric coordinates of @p x with respect to cell @p c (computes
+    /// the cell's geometry: in a loop over a cell's points, call geometry()
+    /// once instead).
     std::array<double, dim + 1>
     barycentric(const unsigned int c, const Point<dim> &x) const
     {
-      // lambda_{k} = grad lambda_k . (x - x_0) for k >= 1 (lambda_k(x_0) =
-      // 0): the gradients are the rows of the inverse edge matrix.
-      std::array<double, dim + 1> lambda;
-      const Tensor<1, dim>        d   = x - node_positions[cell_nodes[c][0]];
-      double                      sum = 0;
-      for (unsigned int k = 0; k < dim; ++k)
-        {
-          lambda[k + 1] = inverse_edges[c][k] * d;
-          sum += lambda[k + 1];
-        }
-      lambda[0] = 1. - sum;
-      return lambda;
+      return geometry(c).barycentric(x);
     }
 
-    /**
-     * Gradients of the dim + 1 shape functions of cell @p c (constant over
-     * the cell): those of vertices 1..dim are the rows of the inverse edge
-     * matrix, that of vertex 0 minus their sum (the shape functions sum to
-     * one). Computed, not stored: the sum costs dim additions where a
-     * stored copy cost 16 B per triangle, 24 B per tetrahedron.
-     */
+    /// Gradients of the dim + 1 shape functions of cell @p c.
     std::array<Tensor<1, dim>, dim + 1>
     shape_gradients(const unsigned int c) const
     {
-      std::array<Tensor<1, dim>, dim + 1> g;
-      for (unsigned int k = 0; k < dim; ++k)
-        {
-          g[k + 1] = inverse_edges[c][k];
-          g[0] -= inverse_edges[c][k];
-        }
-      return g;
+      return geometry(c).shape_gradients();
     }
 
-    /// Smallest altitude of cell @p c: min_k 1/|grad lambda_k| (for the
-    /// time step and the displacement guards; computed, not stored).
+    /// Smallest altitude of cell @p c.
     double
     min_altitude(const unsigned int c) const
     {
-      double     hmin = std::numeric_limits<double>::max();
-      const auto g    = shape_gradients(c);
-      for (unsigned int k = 0; k < n_vertices; ++k)
-        hmin = std::min(hmin, 1. / g[k].norm());
-      return hmin;
+      return geometry(c).min_altitude();
+    }
+
+    /// Volume (area in 2D) of cell @p c.
+    double
+    cell_volume(const unsigned int c) const
+    {
+      return CellGeometry<dim>::volume_of(
+        CellGeometry<dim>::edge_matrix(vertices(c)));
     }
 
     /// Cartesian position from barycentric coordinates in cell @p c.
@@ -213,14 +209,16 @@ namespace fsgmpm
     // ---- per-node data -------------------------------------------------
     std::vector<Point<dim>> node_positions;
     /// Lumped volume of the node: sum over its cells of V_c / (dim + 1).
+    /// Empty until compute_node_volumes() (only the multi-field contact and
+    /// APIC's affine remap read it).
     std::vector<double> node_volume;
+
+    /// Fill node_volume (if it is empty), in cell order.
+    void
+    compute_node_volumes();
 
     // ---- per-cell data (index = active cell index) ---------------------
     std::vector<std::array<unsigned int, dim + 1>> cell_nodes;
-    /// Inverse of the edge matrix (x_k - x_0): row k - 1 is the gradient of
-    /// lambda_k, so lambda_k = grad lambda_k . (x - x_0) (shape_gradients()).
-    std::vector<Tensor<2, dim>> inverse_edges;
-    std::vector<double>         cell_volume;
     /// Cell across the face opposite local vertex k, or invalid.
     std::vector<std::array<unsigned int, dim + 1>> cell_neighbors;
 
@@ -244,9 +242,17 @@ namespace fsgmpm
     /// order: the summation order (hence the result) does not depend on the
     /// number of threads, and a block's points and nodes stay in cache.
     /// Block numbers grow with the cell number.
-    std::vector<unsigned int> cell_block;
-    std::vector<unsigned int> block_colour;
-    unsigned int              n_colours = 0;
+    unsigned int
+    cell_block(const unsigned int c) const
+    {
+      return n_fields == 1
+               ? c / cells_per_block
+               : (c % n_base_cells()) / cells_per_block
+                   + field_of_cell(c) * (block_colour.size() / n_fields);
+    }
+    static constexpr unsigned int cells_per_block = 32;
+    std::vector<unsigned int>     block_colour;
+    unsigned int                  n_colours = 0;
 
   private:
     unsigned int n_fields = 1;

@@ -5,6 +5,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <vector>
 
 namespace fsgmpm
@@ -25,7 +27,6 @@ namespace fsgmpm
       mass.assign(n_nodes, 0.);
       momentum.assign(n_nodes, Tensor<1, dim>());
       internal_force.assign(n_nodes, Tensor<1, dim>());
-      external_force.assign(n_nodes, Tensor<1, dim>());
       velocity.assign(n_nodes, Tensor<1, dim>());
       acceleration.assign(n_nodes, Tensor<1, dim>());
       // The fields of one option each are sized when it first writes them
@@ -35,7 +36,7 @@ namespace fsgmpm
       release(contact_volume);
       release(volume_stress);
       release(support_volume);
-      active_stamp.assign(n_nodes, 0u);
+      active_stamp.assign(n_nodes, 0);
       active_nodes.clear();
       stamp = 0;
     }
@@ -49,7 +50,6 @@ namespace fsgmpm
           mass[i]           = 0.;
           momentum[i]       = Tensor<1, dim>();
           internal_force[i] = Tensor<1, dim>();
-          external_force[i] = Tensor<1, dim>();
           velocity[i]       = Tensor<1, dim>();
           acceleration[i]   = Tensor<1, dim>();
         }
@@ -63,7 +63,13 @@ namespace fsgmpm
             support_volume[i] = 0.;
           }
       active_nodes.clear();
-      ++stamp;
+      // A byte per node: when the stamp wraps, every node is unmarked once
+      // (O(nodes) every 255 steps).
+      if (++stamp == 0)
+        {
+          std::fill(active_stamp.begin(), active_stamp.end(), 0);
+          stamp = 1;
+        }
     }
 
     /// Size an optional field (added_mass, contact_normal and
@@ -84,7 +90,6 @@ namespace fsgmpm
       return MemoryConsumption::memory_consumption(mass)
              + MemoryConsumption::memory_consumption(momentum)
              + MemoryConsumption::memory_consumption(internal_force)
-             + MemoryConsumption::memory_consumption(external_force)
              + MemoryConsumption::memory_consumption(velocity)
              + MemoryConsumption::memory_consumption(acceleration)
              + MemoryConsumption::memory_consumption(added_mass)
@@ -112,9 +117,9 @@ namespace fsgmpm
     std::vector<double>         mass;
     std::vector<Tensor<1, dim>> momentum;
     /// F_int of Eq. (3), with the sign of the paper: M a = F_ext - F_int.
+    /// F_ext of Eq. (4) is gravity only, m_i g: the grid update computes
+    /// it where it needs it (no array).
     std::vector<Tensor<1, dim>> internal_force;
-    /// F_ext of Eq. (4): gravity and tractions.
-    std::vector<Tensor<1, dim>> external_force;
     /// Nodal velocity: v^{n+1} after the grid update, then the remapped
     /// velocity of Eq. (20) in MUSL.
     std::vector<Tensor<1, dim>> velocity;
@@ -143,8 +148,9 @@ namespace fsgmpm
     std::vector<double> support_volume;
 
     std::vector<unsigned int> active_nodes;
-    std::vector<unsigned int> active_stamp;
-    unsigned int              stamp = 0;
+    /// active_stamp[i] == stamp: node i is in active_nodes this step.
+    std::vector<std::uint8_t> active_stamp;
+    std::uint8_t              stamp = 0;
 
   private:
     template <typename T>

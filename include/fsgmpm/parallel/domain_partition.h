@@ -133,8 +133,8 @@ namespace fsgmpm
     template <typename T>
     void
     update_ghost_nodes(std::vector<T>                  &values,
-                       const std::vector<unsigned int> &active_stamp,
-                       const unsigned int               stamp) const;
+                       const std::vector<std::uint8_t> &active_stamp,
+                       const std::uint8_t               stamp) const;
 
     /**
      * Every node's value as the process that counts it has it (exact
@@ -199,8 +199,8 @@ namespace fsgmpm
   void
   DomainPartition<dim>::update_ghost_nodes(
     std::vector<T>                  &values,
-    const std::vector<unsigned int> &active_stamp,
-    const unsigned int               stamp) const
+    const std::vector<std::uint8_t> &active_stamp,
+    const std::uint8_t               stamp) const
   {
     if (neighbours.empty())
       return;

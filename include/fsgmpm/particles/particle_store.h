@@ -48,7 +48,7 @@ namespace fsgmpm
      * depends only on which points are where, not on the history of the
      * array, so every sum over the points of a cell is the same whichever
      * process holds them (MPI runs reproduce serial runs bit for bit).
-     * Rebuilds cell_begin, cell_end and occupied_cells. The cost is
+     * Rebuilds the cell ranges and occupied_cells. The cost is
      * O(n + k log k) for n points in k occupied cells, whatever the number
      * of cells: work follows the material, not the mesh (only the entries
      * of the cells occupied before and after are touched); the points of a
@@ -75,15 +75,65 @@ namespace fsgmpm
       return with_affine_velocity;
     }
 
-    /// Memory held per point in bytes (all arrays, including scratch).
+    /// Memory held per point in bytes (all arrays, including scratch and
+    /// the per-cell ranges).
     double
     bytes_per_particle() const;
 
-    /// Particles of cell c are [cell_begin[c], cell_end[c]) (an empty
+    /// Give back the arrays' spare capacity (after the fill: growing by
+    /// push_back leaves up to half of each array unused).
+    void
+    shrink_to_fit();
+
+    /// The number of cells of the last sort_by_cell().
+    unsigned int
+    n_cells() const
+    {
+      return slot_of_cell.size();
+    }
+
+    /// The slot of cell @p c (a number below occupied_cells.size(), its
+    /// index there after sort_by_cell()), or numbers::invalid_unsigned_int
+    /// if it holds no point.
+    unsigned int
+    occupied_slot(const unsigned int c) const
+    {
+      return slot_of_cell[c];
+    }
+
+    /// The points of cell c are [cell_begin(c), cell_end(c)) (an empty
     /// range for an empty cell).
-    std::vector<unsigned int> cell_begin, cell_end;
+    unsigned int
+    cell_begin(const unsigned int c) const
+    {
+      const unsigned int j = slot_of_cell[c];
+      return j == invalid_slot ? 0 : slot_begin[j];
+    }
+
+    unsigned int
+    cell_end(const unsigned int c) const
+    {
+      const unsigned int j = slot_of_cell[c];
+      return j == invalid_slot ? 0 : slot_end[j];
+    }
+
     /// The cells with at least one point, ascending.
     std::vector<unsigned int> occupied_cells;
+
+    /**
+     * MPI (DistributedPoints::add_ghosts): cell @p c, empty so far, holds
+     * the points [begin, end), appended after the sorted ones. It gets the
+     * next slot; occupied_cells is the caller's to update.
+     */
+    void
+    append_cell_range(const unsigned int c,
+                      const unsigned int begin,
+                      const unsigned int end);
+
+    /// MPI (DistributedPoints::drop_ghosts): keep the ranges of the
+    /// ascending @p cells only, which become occupied_cells.
+    void
+    keep_cell_ranges(const std::vector<unsigned int> &cells);
 
     std::vector<Point<dim>>     position;
     std::vector<Tensor<1, dim>> velocity;
@@ -113,13 +163,28 @@ namespace fsgmpm
     unsigned int next_id = 0;
 
   private:
+    static constexpr unsigned int invalid_slot = static_cast<unsigned int>(-1);
+
+    /// Reorder @p v to v[order[i]] in place, along the cycles of the
+    /// permutation (cycle_starts): no copy of the array, which cost up to
+    /// 48 B per point as scratch.
     template <typename T>
     void
-    permute(std::vector<T> &v, const std::vector<unsigned int> &order);
+    permute(std::vector<T> &v) const;
 
-    bool                      with_affine_velocity = false;
+    bool with_affine_velocity = false;
+    /// Per cell: its index in occupied_cells, or invalid_slot (4 B per
+    /// cell, where a begin and an end per cell took 8).
+    std::vector<unsigned int> slot_of_cell;
+    /// Per occupied cell j: its points are [slot_begin[j], slot_end[j]).
+    /// A slot is a number below occupied_cells.size(); sort_by_cell()
+    /// numbers the cells in ascending order.
+    std::vector<unsigned int> slot_begin, slot_end;
+    /// Scratch of the sort: the new order, a cursor per occupied cell, one
+    /// index of each cycle of the permutation that is not a fixed point.
     std::vector<unsigned int> order_scratch;
-    std::vector<char>         value_scratch;
+    std::vector<unsigned int> slot_cursor;
+    std::vector<unsigned int> cycle_starts;
   };
 } // namespace fsgmpm
 

@@ -27,10 +27,21 @@ namespace fsgmpm
     unsigned int
     locate(const Point<dim> &x, const unsigned int guess) const
     {
+      return locate(x, guess, grid.geometry(guess));
+    }
+
+    /// The same, with the geometry of the guess cell known (points of one
+    /// cell in a row compute it once).
+    unsigned int
+    locate(const Point<dim>        &x,
+           const unsigned int       guess,
+           const CellGeometry<dim> &guess_geometry) const
+    {
       unsigned int c = guess;
       for (unsigned int step = 0; step < max_walk_steps; ++step)
         {
-          const auto   lambda = grid.barycentric(c, x);
+          const auto   lambda = step == 0 ? guess_geometry.barycentric(x)
+                                          : grid.barycentric(c, x);
           unsigned int kmin   = 0;
           for (unsigned int k = 1; k < dim + 1; ++k)
             if (lambda[k] < lambda[kmin])

@@ -48,14 +48,14 @@ namespace fsgmpm
       const auto &cells = particles.occupied_cells;
       for (unsigned int i = 0; i < cells.size();)
         {
-          const unsigned int block = grid.cell_block[cells[i]];
+          const unsigned int block = grid.cell_block(cells[i]);
           unsigned int       j     = i + 1;
-          while (j < cells.size() && grid.cell_block[cells[j]] == block)
+          while (j < cells.size() && grid.cell_block(cells[j]) == block)
             ++j;
           // A block met twice would run twice in one colour, in parallel
           // with itself: a race. sort_by_cell() sorts; one comparison per
           // block keeps a program that fills occupied_cells itself honest.
-          AssertThrow(j == cells.size() || grid.cell_block[cells[j]] > block,
+          AssertThrow(j == cells.size() || grid.cell_block(cells[j]) > block,
                       ExcMessage("ParticleStore::occupied_cells must ascend "
                                  "(call sort_by_cell())."));
           by_colour[grid.block_colour[block]].push_back({{i, j}});
@@ -80,11 +80,12 @@ namespace fsgmpm
                   const ParticleStore<dim>  &particles,
                   const unsigned int         c)
     {
-      std::array<double, dim + 1> share = {};
-      for (unsigned int p = particles.cell_begin[c]; p < particles.cell_end[c];
+      std::array<double, dim + 1> share    = {};
+      const CellGeometry<dim>     geometry = grid.geometry(c);
+      for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
            ++p)
         {
-          const auto lambda = grid.barycentric(c, particles.position[p]);
+          const auto lambda = geometry.barycentric(particles.position[p]);
           for (unsigned int k = 0; k < dim + 1; ++k)
             share[k] += lambda[k] * particles.volume[p];
         }
@@ -114,13 +115,14 @@ namespace fsgmpm
         return;
       // scale[m] first holds the sum of the material's counted volumes.
       std::fill(scale.begin(), scale.end(), 0.);
-      for (unsigned int p = particles.cell_begin[c]; p < particles.cell_end[c];
+      for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
            ++p)
         if (options[particles.material_id[p]].capped_weights && counts(p))
           scale[particles.material_id[p]] += particles.volume[p];
+      const double cell_volume = grid.cell_volume(c);
       for (unsigned int m = 0; m < options.size(); ++m)
         scale[m] = (options[m].capped_weights && scale[m] > 0)
-                     ? std::min(1., grid.cell_volume[c] / scale[m])
+                     ? std::min(1., cell_volume / scale[m])
                      : 1.;
     }
 
@@ -150,10 +152,10 @@ namespace fsgmpm
                      const unsigned int         c)
     {
       double volume = 0;
-      for (unsigned int p = particles.cell_begin[c]; p < particles.cell_end[c];
+      for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
            ++p)
         volume += particles.volume[p];
-      return projection_share(volume, grid.cell_volume[c]);
+      return projection_share(volume, grid.cell_volume(c));
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).

@@ -6,6 +6,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <fsgmpm/particles/particle_store.h>
+
 #include <vector>
 
 namespace fsgmpm
@@ -35,19 +37,18 @@ namespace fsgmpm
     }
 
     /**
-     * Number the occupied cells @p occupied_cells for this step's velocity
-     * gradients: they are stored for the occupied cells only (a tank is
+     * Size this step's velocity gradients for the occupied cells of
+     * @p particles: they are stored for the occupied cells only (a tank is
      * mostly empty; a gradient for every cell held 32 B per triangle, 72 B
-     * per tetrahedron), and cell_velocity_gradient(c) finds cell c's.
+     * per tetrahedron), in the order of the points' occupied_cells, and
+     * cell_velocity_gradient(c) finds cell c's by its slot there. Valid
+     * until the points are sorted again.
      */
     void
-    number_occupied_cells(const std::vector<unsigned int> &occupied_cells)
+    number_occupied_cells(const ParticleStore<dim> &particles)
     {
-      if (cell_slot.size() != n_cells)
-        cell_slot.assign(n_cells, numbers::invalid_unsigned_int);
-      for (unsigned int j = 0; j < occupied_cells.size(); ++j)
-        cell_slot[occupied_cells[j]] = j;
-      velocity_gradient.resize(occupied_cells.size());
+      points = &particles;
+      velocity_gradient.resize(particles.occupied_cells.size());
     }
 
     /// The velocity gradient of occupied cell @p c (numbered by
@@ -55,15 +56,15 @@ namespace fsgmpm
     Tensor<2, dim> &
     cell_velocity_gradient(const unsigned int c)
     {
-      AssertIndexRange(cell_slot[c], velocity_gradient.size());
-      return velocity_gradient[cell_slot[c]];
+      AssertIndexRange(points->occupied_slot(c), velocity_gradient.size());
+      return velocity_gradient[points->occupied_slot(c)];
     }
 
     const Tensor<2, dim> &
     cell_velocity_gradient(const unsigned int c) const
     {
-      AssertIndexRange(cell_slot[c], velocity_gradient.size());
-      return velocity_gradient[cell_slot[c]];
+      AssertIndexRange(points->occupied_slot(c), velocity_gradient.size());
+      return velocity_gradient[points->occupied_slot(c)];
     }
 
     /// Make sure material m has nodal arrays and zero them on @p nodes.
@@ -95,23 +96,17 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(denominator)
              + MemoryConsumption::memory_consumption(volume_fraction)
              + MemoryConsumption::memory_consumption(lumped_volume)
-             + MemoryConsumption::memory_consumption(cell_counted)
-             + MemoryConsumption::memory_consumption(cell_slot)
              + MemoryConsumption::memory_consumption(velocity_gradient)
              + MemoryConsumption::memory_consumption(nodal_velocity_gradient);
     }
 
     std::vector<std::vector<double>> numerator, denominator;
     std::vector<double>              volume_fraction, lumped_volume;
-    /// Free-surface detection: base cells already counted in lumped_volume
-    /// this call (a cell occupied in two velocity fields counts once).
-    std::vector<unsigned int> cell_counted;
-    unsigned int              cell_count_stamp = 0;
     /// Velocity gradient of the occupied cells, in the order of the
     /// points' occupied_cells (cell_velocity_gradient()).
     std::vector<Tensor<2, dim>> velocity_gradient;
-    /// Index into velocity_gradient of each cell occupied this step.
-    std::vector<unsigned int> cell_slot;
+    /// The points whose occupied cells number velocity_gradient.
+    const ParticleStore<dim> *points = nullptr;
     /// Stress integration = nodal projection: the cell-volume weighted
     /// nodal average of velocity_gradient (Stages::nodal_velocity_gradients).
     std::vector<Tensor<2, dim>> nodal_velocity_gradient;
