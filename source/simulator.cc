@@ -479,7 +479,6 @@ namespace fsgmpm
       }
     if (params.use_apic)
       particles.enable_affine_velocity();
-    particles.shrink_to_fit();
     particles.sort_by_cell(grid->n_cells());
   }
 

@@ -167,8 +167,7 @@ namespace fsgmpm
     // Blocks of consecutive cells: colouring single cells sent a scatter
     // across the whole domain once per colour, missing the cache at every
     // cell (p2g 2.4 times slower in the 3D dam break); a block's cells are
-    // neighbours. 16 to 128 cells measured alike.
-    // (cells_per_block = 32)
+    // neighbours. 16 to 128 cells measured alike (cells_per_block = 32).
     const unsigned int n_blocks
       = (n_cells() + cells_per_block - 1) / cells_per_block;
 

@@ -3,7 +3,6 @@
 #include <fsgmpm/particles/particle_store.h>
 
 #include <algorithm>
-#include <cstring>
 
 namespace fsgmpm
 {
@@ -249,27 +248,6 @@ namespace fsgmpm
         slot_end[j]            = slot_cursor[2 * j + 1];
       }
     occupied_cells = cells;
-  }
-
-
-
-  template <int dim>
-  void
-  ParticleStore<dim>::shrink_to_fit()
-  {
-    position.shrink_to_fit();
-    velocity.shrink_to_fit();
-    affine_velocity.shrink_to_fit();
-    stress.shrink_to_fit();
-    mass.shrink_to_fit();
-    volume.shrink_to_fit();
-    reference_volume.shrink_to_fit();
-    cell.shrink_to_fit();
-    material_id.shrink_to_fit();
-    body_id.shrink_to_fit();
-    free_surface.shrink_to_fit();
-    id.shrink_to_fit();
-    ghost.shrink_to_fit();
   }
 
 

@@ -58,7 +58,7 @@ namespace fsgmpm
      * this on an empty grid. Then only one process ever holds deal.II's
      * mesh, whose creation is the peak of a process's memory (its cell
      * list, connectivity and arrays: some 320 B per triangle, where the
-     * grid keeps about 80 B). Call before set_velocity_fields().
+     * grid keeps about 32 B). Call before set_velocity_fields().
      */
     void
     broadcast(const MPI_Comm &communicator, const unsigned int root = 0);

@@ -36,7 +36,7 @@ namespace fsgmpm
    * run's arithmetic.
    *
    * This first version keeps the whole background grid on every process
-   * (memory O(mesh) per process, about 210 B per triangle; the points are
+   * (memory O(mesh) per process, about 90 B per triangle; the points are
    * distributed). With multi-field contact the copies of a cell in the
    * other velocity fields belong to the base cell's owner; a membrane is
    * held whole by every process (MembraneCoupling).

@@ -80,11 +80,6 @@ namespace fsgmpm
     double
     bytes_per_particle() const;
 
-    /// Give back the arrays' spare capacity (after the fill: growing by
-    /// push_back leaves up to half of each array unused).
-    void
-    shrink_to_fit();
-
     /// The number of cells of the last sort_by_cell().
     unsigned int
     n_cells() const
