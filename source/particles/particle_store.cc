@@ -38,6 +38,29 @@ namespace fsgmpm
 
   template <int dim>
   void
+  ParticleStore<dim>::reserve(const unsigned int n)
+  {
+    position.reserve(n);
+    cell.reserve(n);
+    mass.reserve(n);
+    volume.reserve(n);
+    reference_volume.reserve(n);
+    velocity.reserve(n);
+    stress.reserve(n);
+    material_id.reserve(n);
+    body_id.reserve(n);
+    free_surface.reserve(n);
+    id.reserve(n);
+    if (!ghost.empty())
+      ghost.reserve(n);
+    if (with_affine_velocity)
+      affine_velocity.reserve(n);
+  }
+
+
+
+  template <int dim>
+  void
   ParticleStore<dim>::enable_affine_velocity()
   {
     with_affine_velocity = true;

@@ -90,13 +90,10 @@ namespace fsgmpm
                      const Membrane<dim>                          *membrane,
                      const Tensor<1, dim>                         &gravity,
                      Monitors                                     &monitors,
-                     const MPI_Comm                                communicator,
-                     const NodalFields<dim>                       *nodes,
-                     const std::vector<std::uint8_t> *counted_nodes)
+                     const MPI_Comm                                communicator)
     {
       const std::vector<double> totals = sum_over_processes(
-        local_energies(
-          particles, materials, membrane, gravity, nodes, counted_nodes),
+        local_energies<dim>(particles, materials, membrane, gravity),
         communicator);
       set_energies(make_array_view(totals), monitors);
     }
@@ -153,9 +150,7 @@ namespace fsgmpm
     const Membrane<dim> *,                                                \
     const Tensor<1, dim> &,                                               \
     Monitors &,                                                           \
-    const MPI_Comm,                                                       \
-    const NodalFields<dim> *,                                             \
-    const std::vector<std::uint8_t> *);                                   \
+    const MPI_Comm);                                                      \
   template double potential_energy_above<dim>(const ParticleStore<dim> &, \
                                               const Tensor<1, dim> &,     \
                                               const Point<dim> &);

@@ -78,6 +78,14 @@ end)";
   EXPECT_NEAR(area[0], 0.16, 1e-12);
   EXPECT_NEAR(area[1], 0.64, 1e-12);
   EXPECT_NEAR(area[0] + area[1], 0.8, 1e-12);
+  // The bodies are counted before they are stored: every array has its
+  // exact size (no spare room of push_back's doubling), and the count
+  // leaves no ids behind.
+  const auto &particles = sim.get_particles();
+  EXPECT_EQ(particles.next_id, particles.size());
+  EXPECT_EQ(particles.position.capacity(), particles.size());
+  EXPECT_EQ(particles.stress.capacity(), particles.size());
+  EXPECT_EQ(particles.free_surface.capacity(), particles.size());
 
   // The other way round the block has no room left: a clear refusal.
   auto reversed = test_tools::make_parameters(

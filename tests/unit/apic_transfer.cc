@@ -144,7 +144,7 @@ namespace
       nodes.velocity[i] = g(grid->node_positions[i]);
     Stages::g2p(*grid, nodes, 1e-3, apic_points);
     SmoothingFields<dim> smoothing;
-    smoothing.resize(1, grid->n_nodes(), grid->n_cells());
+    smoothing.resize(1, grid->n_nodes());
     Stages::velocity_gradients(*grid, nodes, smoothing, apic_points);
     Stages::store_affine_velocity(smoothing, apic_points);
     double v_error = 0, C_error = 0;
@@ -195,7 +195,7 @@ namespace
         nodes.velocity[i][d] = updated[i][d] = v(rng);
     Stages::g2p(*grid, nodes, 1e-3, points);
     SmoothingFields<dim> smoothing;
-    smoothing.resize(1, grid->n_nodes(), grid->n_cells());
+    smoothing.resize(1, grid->n_nodes());
     Stages::velocity_gradients(*grid, nodes, smoothing, points);
     Stages::store_affine_velocity(smoothing, points);
 

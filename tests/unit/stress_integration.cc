@@ -371,7 +371,7 @@ namespace
       for (unsigned int d = 0; d < dim; ++d)
         nodes.velocity[i][d] = s(rng);
     SmoothingFields<dim> smoothing;
-    smoothing.resize(1, grid->n_nodes(), grid->n_cells());
+    smoothing.resize(1, grid->n_nodes());
     Stages::velocity_gradients(*grid, nodes, smoothing, particles);
     Stages::nodal_velocity_gradients(*grid, nodes, smoothing, particles);
 

@@ -43,6 +43,12 @@ namespace fsgmpm
         const std::uint16_t          material,
         const std::uint16_t          body);
 
+    /// Room for @p n points in every array, so that the fill leaves no
+    /// spare capacity (push_back's doubling left up to half of each array
+    /// unused: 33 B per point in the 2D dam break).
+    void
+    reserve(const unsigned int n);
+
     /**
      * Sort by cell, and inside a cell by point id: a canonical order that
      * depends only on which points are where, not on the history of the
@@ -168,8 +174,8 @@ namespace fsgmpm
     permute(std::vector<T> &v) const;
 
     bool with_affine_velocity = false;
-    /// Per cell: its index in occupied_cells, or invalid_slot (4 B per
-    /// cell, where a begin and an end per cell took 8).
+    /// Per cell: its slot, or invalid_slot (4 B per cell, where a begin
+    /// and an end per cell took 8).
     std::vector<unsigned int> slot_of_cell;
     /// Per occupied cell j: its points are [slot_begin[j], slot_end[j]).
     /// A slot is a number below occupied_cells.size(); sort_by_cell()

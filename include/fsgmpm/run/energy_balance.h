@@ -33,11 +33,8 @@ namespace fsgmpm
     /// processes of @p communicator (each passes its own points, one of
     /// them the membrane): the result does not depend on the number of
     /// threads, and on the number of processes only in the last bit or two.
-    /// With @p nodes (after a step), also the kinetic energy of the grid
-    /// from the nodal (remapped) velocities into
-    /// monitors.grid_kinetic_energy, in the same sum over the processes
-    /// (one collective for the four): with @p counted_nodes (MPI) only the
-    /// nodes marked 1 there, so that each node counts once.
+    /// The step itself calls local_energies() with the nodes and sends the
+    /// sums along with the grid update's (Simulator::advance).
     template <int dim>
     void
     compute_energies(const ParticleStore<dim>                     &particles,
@@ -45,12 +42,12 @@ namespace fsgmpm
                      const Membrane<dim>                          *membrane,
                      const Tensor<1, dim>                         &gravity,
                      Monitors                                     &monitors,
-                     const MPI_Comm          communicator = MPI_COMM_SELF,
-                     const NodalFields<dim> *nodes        = nullptr,
-                     const std::vector<std::uint8_t> *counted_nodes = nullptr);
+                     const MPI_Comm communicator = MPI_COMM_SELF);
 
     /// This process's part of compute_energies(), compensated (kinetic,
-    /// strain, potential, and with @p nodes the grid's kinetic energy):
+    /// strain, potential, and with @p nodes (after a step) the grid's
+    /// kinetic energy from the nodal velocities, with @p counted_nodes
+    /// (MPI) only at the nodes marked 1 there, so that each counts once):
     /// summed over the processes (sum_over_processes(), maybe with other
     /// sums in the same collective), then stored by set_energies().
     template <int dim>

@@ -25,14 +25,11 @@ namespace fsgmpm
   struct SmoothingFields
   {
     void
-    resize(const unsigned int n_materials,
-           const unsigned int n_nodes,
-           const unsigned int n_cells)
+    resize(const unsigned int n_materials, const unsigned int n_nodes)
     {
       numerator.assign(n_materials, {});
       denominator.assign(n_materials, {});
       this->n_nodes = n_nodes;
-      this->n_cells = n_cells;
       velocity_gradient.clear();
     }
 
@@ -111,7 +108,6 @@ namespace fsgmpm
     /// nodal average of velocity_gradient (Stages::nodal_velocity_gradients).
     std::vector<Tensor<2, dim>> nodal_velocity_gradient;
     unsigned int                n_nodes = 0;
-    unsigned int                n_cells = 0;
   };
 } // namespace fsgmpm
 
