@@ -93,11 +93,26 @@ namespace fsgmpm
         std::vector<Point<2>> poly;
         for (const auto &x : membrane->ordered_nodes())
           poly.emplace_back(x[0], x[1]);
+        // A point off the polygon's bounding box (by more than round-off)
+        // is outside: its ray crosses the polygon an even number of times
+        // or not at all, so inside_polygon() would say so too. Most water
+        // points are, and the tests evaluate this at every step.
+        Point<2> lo = poly[0], hi = poly[0];
+        for (const Point<2> &v : poly)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], v[d]);
+              hi[d] = std::max(hi[d], v[d]);
+            }
+        const double margin = 1e-9 * (hi - lo).norm();
         for (unsigned int p = 0; p < particles.size(); ++p)
           {
             const Point<2> x(particles.position[p][0],
                              particles.position[p][1]);
-            const bool     inside = inside_polygon(poly, x);
+            const bool inside = x[0] > lo[0] - margin && x[0] < hi[0] + margin
+                                && x[1] > lo[1] - margin
+                                && x[1] < hi[1] + margin
+                                && inside_polygon(poly, x);
             if (particles.body_id[p] == container && !inside)
               {
                 ++soil_outside;

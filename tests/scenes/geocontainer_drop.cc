@@ -17,8 +17,10 @@
 // velocity at 0.05, 0.1 and 0.2 s is negative and growing in magnitude
 // (measured -0.36, -0.54, -0.67 m/s for the polygon, -0.25, -0.38, -0.53
 // for the ellipse: the polygon's pointed bottom enters faster, as in the
-// paper's Fig. 15), at 0.2 s within 0.02 m/s of that measurement. 45 s on
-// 2 cores (fresh clone, nothing else running).
+// paper's Fig. 15), at 0.2 s within 0.02 m/s of that measurement. 88 s on
+// 2 cores, nothing else running (2026-11-28; 107 s before the container
+// monitor skipped the points off the membrane's bounding box; the scene
+// monitors are evaluated at every step here).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
