@@ -23,7 +23,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <numeric>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -452,40 +451,35 @@ namespace fsgmpm
           = std::make_unique<CrossSectionShape<dim>>(membrane_outline,
                                                      membrane_z_range.first,
                                                      membrane_z_range.second);
-    if (Parallel::n_processes(MPI_COMM_WORLD) == 1)
+    // The bodies are filled twice: first counting the points of each cell
+    // (storing none), then storing the points kept, in arrays of the exact
+    // size (filled by push_back they kept up to half their room unused: 33
+    // B of 329 B per point in the 2D dam break). MPI: no process holds all
+    // points; the partition weighs the counts and a process stores the
+    // points of its own cells, each with the id, and so the place, it has
+    // in a serial run.
+    std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
+    {
+      const std::vector<std::uint8_t> store_none(grid->n_base_cells(), 0);
+      fill_bodies(&store_none, &points_per_cell);
+    }
+    std::vector<std::uint8_t> mine; // empty: keep every point (serial)
+    if (Parallel::n_processes(MPI_COMM_WORLD) > 1)
       {
-        // Count first (storing none), then fill arrays of the exact size:
-        // filled by push_back they kept up to half their room unused (33 B
-        // of 329 B per point in the 2D dam break). The count costs a
-        // second pass over the bodies' reference points.
-        std::vector<unsigned int>       points_per_cell(grid->n_cells(), 0);
-        const std::vector<std::uint8_t> none(grid->n_base_cells(), 0);
-        fill_bodies(&none, &points_per_cell);
-        const unsigned int n_points
-          = std::accumulate(points_per_cell.begin(), points_per_cell.end(), 0u);
-        particles = ParticleStore<dim>();
-        particles.reserve(n_points);
-        fill_bodies(nullptr, nullptr);
-      }
-    else
-      {
-        // MPI: no process holds all points. The bodies are filled twice:
-        // first counting the points of each cell (storing none), which
-        // the partition weighs, then storing the points of this process's
-        // cells only. Each point gets the id, and so the place, it has in
-        // a serial run.
         partition
           = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
-        std::vector<unsigned int>       points_per_cell(grid->n_cells(), 0);
-        const std::vector<std::uint8_t> none(grid->n_base_cells(), 0);
-        fill_bodies(&none, &points_per_cell);
         partition->partition(points_per_cell);
-        std::vector<std::uint8_t> mine(grid->n_base_cells());
+        mine.resize(grid->n_base_cells());
         for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
           mine[c] = partition->owner(c) == partition->rank();
-        particles = ParticleStore<dim>();
-        fill_bodies(&mine, nullptr);
       }
+    unsigned int n_kept = 0;
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      if (mine.empty() || mine[c % grid->n_base_cells()])
+        n_kept += points_per_cell[c];
+    particles = ParticleStore<dim>();
+    particles.reserve(n_kept);
+    fill_bodies(mine.empty() ? nullptr : &mine, nullptr);
     for (auto &body : bodies)
       {
         material_options.push_back(body.options);
