@@ -1,3 +1,5 @@
+#include <deal.II/base/bounding_box.h>
+
 #include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/monitors/container_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
@@ -97,22 +99,16 @@ namespace fsgmpm
         // is outside: its ray crosses the polygon an even number of times
         // or not at all, so inside_polygon() would say so too. Most water
         // points are, and the tests evaluate this at every step.
-        Point<2> lo = poly[0], hi = poly[0];
-        for (const Point<2> &v : poly)
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              lo[d] = std::min(lo[d], v[d]);
-              hi[d] = std::max(hi[d], v[d]);
-            }
-        const double margin = 1e-9 * (hi - lo).norm();
+        BoundingBox<2> box(poly);
+        const double   diagonal = box.get_boundary_points().first.distance(
+          box.get_boundary_points().second);
+        box.extend(1e-9 * diagonal);
         for (unsigned int p = 0; p < particles.size(); ++p)
           {
             const Point<2> x(particles.position[p][0],
                              particles.position[p][1]);
-            const bool inside = x[0] > lo[0] - margin && x[0] < hi[0] + margin
-                                && x[1] > lo[1] - margin
-                                && x[1] < hi[1] + margin
-                                && inside_polygon(poly, x);
+            const bool     inside
+              = box.point_inside(x, 0.) && inside_polygon(poly, x);
             if (particles.body_id[p] == container && !inside)
               {
                 ++soil_outside;
