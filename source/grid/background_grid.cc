@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -212,6 +213,10 @@ namespace fsgmpm
   {
     if (node_volume.size() == n_nodes())
       return;
+    // A rim node of a window misses the volumes of cells further out.
+    AssertThrow(!windowed,
+                ExcMessage("Compute the nodal volumes of the whole grid "
+                           "before taking its windows."));
     node_volume.assign(n_nodes(), 0.);
     for (unsigned int c = 0; c < n_cells(); ++c)
       {
@@ -242,6 +247,112 @@ namespace fsgmpm
       }
     return best;
   }
+
+  template <int dim>
+  BackgroundGrid<dim>
+  BackgroundGrid<dim>::window(const std::vector<unsigned int> &cells) const
+  {
+    AssertThrow(n_fields == 1 && !windowed,
+                ExcMessage("Take windows of a whole grid, before its "
+                           "velocity fields are set."));
+    AssertThrow(std::adjacent_find(cells.begin(),
+                                   cells.end(),
+                                   std::greater_equal<unsigned int>())
+                    == cells.end()
+                  && (cells.empty() || cells.back() < n_cells()),
+                ExcMessage("The cells of a window must be cells of the grid, "
+                           "in ascending order, each once."));
+    BackgroundGrid<dim> w;
+    w.windowed            = true;
+    w.n_whole_cells       = n_cells();
+    w.n_whole_nodes       = n_nodes();
+    w.min_altitude_global = min_altitude_global;
+    w.max_altitude_global = max_altitude_global;
+    w.lower_corner        = lower_corner;
+    w.upper_corner        = upper_corner;
+    w.n_colours           = n_colours;
+    w.global_cell_index   = cells;
+
+    // The nodes in the whole grid's order.
+    auto &nodes = w.global_node_index;
+    nodes.reserve(cells.size() * n_vertices);
+    for (const unsigned int c : cells)
+      nodes.insert(nodes.end(), cell_nodes[c].begin(), cell_nodes[c].end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    nodes.shrink_to_fit();
+    w.node_positions.resize(nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      w.node_positions[i] = node_positions[nodes[i]];
+    if (node_volume.size() == n_nodes())
+      {
+        w.node_volume.resize(nodes.size());
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          w.node_volume[i] = node_volume[nodes[i]];
+      }
+
+    w.cell_nodes.resize(cells.size());
+    w.cell_neighbors.resize(cells.size());
+    w.window_block.resize(cells.size());
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        const unsigned int g = cells[c];
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          {
+            w.cell_nodes[c][k]     = w.local_node(cell_nodes[g][k]);
+            const unsigned int nb  = cell_neighbors[g][k];
+            w.cell_neighbors[c][k] = nb == invalid ? invalid : w.local_cell(nb);
+          }
+        // The whole grid's blocks, renumbered in order, with their colours.
+        if (c == 0 || g / cells_per_block != cells[c - 1] / cells_per_block)
+          w.block_colour.push_back(block_colour[g / cells_per_block]);
+        w.window_block[c] = w.block_colour.size() - 1;
+      }
+    // The mesh's own boundary faces (sorted by cell, so they stay sorted).
+    for (const BoundaryFace &face : boundary_faces)
+      {
+        const unsigned int c = w.local_cell(face.cell);
+        if (c != invalid)
+          w.boundary_faces.push_back({c, face.vertex, face.boundary_id});
+      }
+    return w;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::local_cell(const unsigned int g) const
+  {
+    if (!windowed)
+      return g < n_cells() ? g : invalid;
+    const unsigned int base = g % n_whole_cells, field = g / n_whole_cells;
+    const auto         it = std::lower_bound(global_cell_index.begin(),
+                                     global_cell_index.end(),
+                                     base);
+    if (field >= n_fields || it == global_cell_index.end() || *it != base)
+      return invalid;
+    return (it - global_cell_index.begin()) + field * n_base_cells();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::local_node(const unsigned int g) const
+  {
+    if (!windowed)
+      return g < n_nodes() ? g : invalid;
+    const unsigned int base = g % n_whole_nodes, field = g / n_whole_nodes;
+    const auto         it = std::lower_bound(global_node_index.begin(),
+                                     global_node_index.end(),
+                                     base);
+    if (field >= n_fields || it == global_node_index.end() || *it != base)
+      return invalid;
+    return (it - global_node_index.begin()) + field * n_base_nodes();
+  }
+
+
 
   template <int dim>
   void
@@ -323,8 +434,9 @@ namespace fsgmpm
   BackgroundGrid<dim>::broadcast(const MPI_Comm    &communicator,
                                  const unsigned int root)
   {
-    AssertThrow(n_fields == 1,
-                ExcMessage("Broadcast a grid before its velocity fields."));
+    AssertThrow(n_fields == 1 && !windowed,
+                ExcMessage("Broadcast a whole grid, before its velocity "
+                           "fields."));
     std::vector<double> scalars;
     if (Utilities::MPI::this_mpi_process(communicator) == root)
       {
@@ -363,7 +475,10 @@ namespace fsgmpm
            + MemoryConsumption::memory_consumption(cell_nodes)
            + MemoryConsumption::memory_consumption(cell_neighbors)
            + boundary_faces.capacity() * sizeof(BoundaryFace)
-           + MemoryConsumption::memory_consumption(block_colour);
+           + MemoryConsumption::memory_consumption(block_colour)
+           + MemoryConsumption::memory_consumption(global_cell_index)
+           + MemoryConsumption::memory_consumption(global_node_index)
+           + MemoryConsumption::memory_consumption(window_block);
   }
 
 

@@ -249,6 +249,24 @@ namespace fsgmpm
     return std::count(cell_owner.begin(), cell_owner.end(), this_process);
   }
 
+  template <int dim>
+  std::vector<unsigned int>
+  DomainPartition<dim>::window_cells() const
+  {
+    std::vector<unsigned int> cells;
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      {
+        const auto holders = ghost_holders(c);
+        if (cell_owner[c] == this_process
+            || std::find(holders.begin(), holders.end(), this_process)
+                 != holders.end())
+          cells.push_back(c);
+      }
+    return cells;
+  }
+
+
+
   template class DomainPartition<2>;
   template class DomainPartition<3>;
 } // namespace fsgmpm

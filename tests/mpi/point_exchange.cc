@@ -12,15 +12,21 @@
 // from the cell's index, so that every field can be checked on arrival.
 //
 // And BackgroundGrid::broadcast: the grid process 0 built, on every process.
+// And BackgroundGrid::window: the part of the grid a process needs (its
+// cells and their ghost layer, numbered on its own) gives every node of its
+// own cells the whole grid's sums bit for bit, in 2D and 3D.
 
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/parallel/domain_partition.h>
+#include <fsgmpm/step/cell_loops.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
 #include <set>
 
 #include "test_utilities.h"
@@ -309,4 +315,179 @@ main(int argc, char **argv)
   const int failures = RUN_ALL_TESTS();
   // Every process's failures count.
   return dealii::Utilities::MPI::max(failures, MPI_COMM_WORLD);
+}
+
+
+
+namespace
+{
+  // Windows of a box in vertical strips (process r owns the cells whose
+  // centre has r/P <= x < (r+1)/P): the window holds what DomainPartition
+  // says, maps back to the whole grid, keeps its blocks' colours, and a
+  // scatter over it (the free-surface volume shares, CellLoops::
+  // scatter_by_colour) gives every node of an owned cell the whole grid's
+  // value bit for bit, while the rim of the ghost layer misses some.
+  template <int d>
+  void
+  check_windows(const unsigned int n)
+  {
+    const MPI_Comm     comm    = MPI_COMM_WORLD;
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const auto         grid    = test_tools::make_unit_box_grid<d>(n);
+    const auto         invalid = BackgroundGrid<d>::invalid;
+    grid->compute_node_volumes();
+    std::vector<unsigned int> owners(grid->n_cells());
+    std::set<unsigned int>    owned_nodes;
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      {
+        double x = 0;
+        for (const unsigned int i : grid->cell_nodes[c])
+          x += grid->node_positions[i][0] / (d + 1);
+        owners[c] = std::min<unsigned int>(n_ranks - 1, x * n_ranks);
+        if (owners[c] == rank)
+          owned_nodes.insert(grid->cell_nodes[c].begin(),
+                             grid->cell_nodes[c].end());
+      }
+    DomainPartition<d> partition(comm, *grid);
+    partition.set_owners(owners);
+
+    std::vector<unsigned int> expected;
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      if (std::any_of(grid->cell_nodes[c].begin(),
+                      grid->cell_nodes[c].end(),
+                      [&](const unsigned int i) {
+                        return owned_nodes.count(i) > 0;
+                      }))
+        expected.push_back(c);
+    const std::vector<unsigned int> cells = partition.window_cells();
+    EXPECT_EQ(cells, expected);
+    ASSERT_LT(cells.size(), grid->n_cells());
+
+    const BackgroundGrid<d> w = grid->window(cells);
+    EXPECT_TRUE(w.is_window());
+    EXPECT_FALSE(grid->is_window());
+    ASSERT_EQ(w.n_cells(), cells.size());
+    EXPECT_EQ(
+      w.n_nodes(), owned_nodes.size() + [&]() {
+        std::set<unsigned int> rim;
+        for (const unsigned int c : cells)
+          for (const unsigned int i : grid->cell_nodes[c])
+            if (owned_nodes.count(i) == 0)
+              rim.insert(i);
+        return rim.size();
+      }());
+    EXPECT_EQ(w.n_colours, grid->n_colours);
+    EXPECT_EQ(w.min_altitude_global, grid->min_altitude_global);
+    EXPECT_EQ(w.upper_corner, grid->upper_corner);
+    for (unsigned int c = 0; c < w.n_cells(); ++c)
+      {
+        const unsigned int g = cells[c];
+        EXPECT_EQ(w.global_cell(c), g);
+        EXPECT_EQ(w.local_cell(g), c);
+        for (unsigned int k = 0; k < d + 1; ++k)
+          {
+            EXPECT_EQ(w.global_node(w.cell_nodes[c][k]),
+                      grid->cell_nodes[g][k]);
+            const unsigned int nb = grid->cell_neighbors[g][k];
+            EXPECT_EQ(w.cell_neighbors[c][k],
+                      nb == invalid ? invalid : w.local_cell(nb));
+          }
+        EXPECT_EQ(w.block_colour[w.cell_block(c)],
+                  grid->block_colour[grid->cell_block(g)]);
+        if (c > 0)
+          {
+            const bool same_block
+              = grid->cell_block(g) == grid->cell_block(cells[c - 1]);
+            EXPECT_EQ(w.cell_block(c) - w.cell_block(c - 1),
+                      same_block ? 0u : 1u);
+          }
+      }
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      if (!std::binary_search(cells.begin(), cells.end(), c))
+        {
+          EXPECT_EQ(w.local_cell(c), invalid);
+        }
+    for (unsigned int i = 0; i < w.n_nodes(); ++i)
+      {
+        EXPECT_EQ(w.local_node(w.global_node(i)), i);
+        EXPECT_EQ(w.node_positions[i], grid->node_positions[w.global_node(i)]);
+        EXPECT_EQ(w.node_volume[i], grid->node_volume[w.global_node(i)]);
+      }
+    unsigned int n_faces = 0;
+    for (const auto &face : grid->boundary_faces)
+      if (w.local_cell(face.cell) != invalid)
+        {
+          ASSERT_LT(n_faces, w.boundary_faces.size());
+          EXPECT_EQ(w.boundary_faces[n_faces].cell, w.local_cell(face.cell));
+          EXPECT_EQ(w.boundary_faces[n_faces].vertex, face.vertex);
+          EXPECT_EQ(w.boundary_faces[n_faces].boundary_id, face.boundary_id);
+          ++n_faces;
+        }
+    EXPECT_EQ(n_faces, w.boundary_faces.size());
+
+    // Three points in every cell, volumes over three decades so that the
+    // order of the sums shows in the bits; the window gets those of its
+    // cells, in the same order.
+    ParticleStore<d>                       all, mine;
+    std::mt19937                           rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      for (unsigned int q = 0; q < 3; ++q)
+        {
+          std::array<double, d + 1> l;
+          double                    sum = 0;
+          for (auto &v : l)
+            sum += (v = u(rng) + 0.05);
+          for (auto &v : l)
+            v /= sum;
+          const Point<d> x      = grid->position(c, l);
+          const double   volume = std::pow(10., -3 * u(rng));
+          all.add(x, c, 1., volume, {}, {}, 0, 0);
+          if (w.local_cell(c) != invalid)
+            {
+              mine.next_id = all.next_id - 1;
+              mine.add(x, w.local_cell(c), 1., volume, {}, {}, 0, 0);
+            }
+        }
+    all.sort_by_cell(grid->n_cells());
+    mine.sort_by_cell(w.n_cells());
+    const auto scatter
+      = [](const BackgroundGrid<d> &g, const ParticleStore<d> &points) {
+          std::vector<double> phi(g.n_nodes(), 0.);
+          CellLoops::scatter_by_colour(g, points, [&](const unsigned int c) {
+            const auto share = CellLoops::volume_shares(g, points, c);
+            for (unsigned int k = 0; k < d + 1; ++k)
+              phi[g.cell_nodes[c][k]] += share[k];
+          });
+          return phi;
+        };
+    const std::vector<double> phi_all  = scatter(*grid, all),
+                              phi_mine = scatter(w, mine);
+    unsigned int exact = 0, partial = 0;
+    for (unsigned int i = 0; i < w.n_nodes(); ++i)
+      if (owned_nodes.count(w.global_node(i)))
+        {
+          EXPECT_EQ(phi_mine[i], phi_all[w.global_node(i)]) << i;
+          ++exact;
+        }
+      else
+        partial += (phi_mine[i] < phi_all[w.global_node(i)]);
+    EXPECT_EQ(exact, owned_nodes.size());
+    EXPECT_GT(partial, 0u);
+  }
+} // namespace
+
+
+
+TEST(GridWindow, OwnNodesGetTheWholeGridsSumsBitForBit2D)
+{
+  check_windows<2>(24);
+}
+
+
+
+TEST(GridWindow, OwnNodesGetTheWholeGridsSumsBitForBit3D)
+{
+  check_windows<3>(6);
 }

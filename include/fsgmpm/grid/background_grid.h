@@ -63,6 +63,61 @@ namespace fsgmpm
     void
     broadcast(const MPI_Comm &communicator, const unsigned int root = 0);
 
+    /**
+     * MPI: the part of this grid that one process needs, numbered on its
+     * own: the cells @p cells (ascending cell numbers of this grid; for a
+     * process, those it owns and every cell that shares a vertex with one
+     * of them, DomainPartition::window_cells()) and their nodes. Both keep
+     * the order of this grid's numbers, and every cell keeps its block's
+     * colour, so a scatter over the window's cells (CellLoops::
+     * scatter_by_colour) adds to a node in the order the whole grid does:
+     * a node whose cells the window holds all gets the whole grid's sum,
+     * bit for bit. A face towards a cell outside the window has no
+     * neighbour and is not a boundary face. The size of a window is that of
+     * the process's share of the mesh, not of the mesh (the road to a grid
+     * that no process holds whole, doc/mpi_plan.md).
+     *
+     * Take windows of a whole grid without velocity fields; the nodal
+     * volumes go along if this grid has them (a window cannot compute them
+     * on its rim).
+     */
+    BackgroundGrid<dim>
+    window(const std::vector<unsigned int> &cells) const;
+
+    /// Whether this grid is a window() of a whole grid.
+    bool
+    is_window() const
+    {
+      return windowed;
+    }
+
+    /// The number in the whole grid of cell @p c (itself in a whole grid).
+    unsigned int
+    global_cell(const unsigned int c) const
+    {
+      return windowed ? global_cell_index[c % n_base_cells()]
+                          + field_of_cell(c) * n_whole_cells
+                      : c;
+    }
+
+    /// The number in the whole grid of node @p i (itself in a whole grid).
+    unsigned int
+    global_node(const unsigned int i) const
+    {
+      return windowed ? global_node_index[i % n_base_nodes()]
+                          + (i / n_base_nodes()) * n_whole_nodes
+                      : i;
+    }
+
+    /// The number here of the whole grid's cell @p g, or invalid if this
+    /// window does not hold it.
+    unsigned int
+    local_cell(const unsigned int g) const;
+
+    /// The number here of the whole grid's node @p g, or invalid.
+    unsigned int
+    local_node(const unsigned int g) const;
+
     unsigned int
     n_cells() const
     {
@@ -246,8 +301,8 @@ namespace fsgmpm
     cell_block(const unsigned int c) const
     {
       return n_fields == 1
-               ? c / cells_per_block
-               : (c % n_base_cells()) / cells_per_block
+               ? base_cell_block(c)
+               : base_cell_block(c % n_base_cells())
                    + field_of_cell(c) * (block_colour.size() / n_fields);
     }
     static constexpr unsigned int cells_per_block = 32;
@@ -256,6 +311,21 @@ namespace fsgmpm
 
   private:
     unsigned int n_fields = 1;
+
+    /// A window's cells and nodes by their numbers in the whole grid
+    /// (ascending), the whole grid's sizes, and each cell's block (its
+    /// blocks are the whole grid's blocks it meets, in order). All empty or
+    /// zero in a whole grid.
+    bool                      windowed = false;
+    std::vector<unsigned int> global_cell_index, global_node_index;
+    unsigned int              n_whole_cells = 0, n_whole_nodes = 0;
+    std::vector<unsigned int> window_block;
+
+    unsigned int
+    base_cell_block(const unsigned int c) const
+    {
+      return windowed ? window_block[c] : c / cells_per_block;
+    }
 
     void
     compute_cell_data(const DoFHandler<dim> &dof_handler);

@@ -154,6 +154,15 @@ namespace fsgmpm
     unsigned int
     n_owned_cells() const;
 
+    /**
+     * The base cells (field 0) this process needs, ascending: those it owns
+     * and every cell that shares a vertex with one of them (its ghost
+     * layer). BackgroundGrid::window() of these holds every node whose sums
+     * this process computes exactly.
+     */
+    std::vector<unsigned int>
+    window_cells() const;
+
   private:
     MPI_Comm                   comm;
     const BackgroundGrid<dim> &grid;
