@@ -5,6 +5,7 @@
 #include <fsgmpm/parallel/domain_partition.h>
 
 #include <algorithm>
+#include <map>
 #include <utility>
 
 namespace fsgmpm
@@ -16,7 +17,7 @@ namespace fsgmpm
     , grid(grid)
     , n_processes(Utilities::MPI::n_mpi_processes(comm))
     , this_process(Utilities::MPI::this_mpi_process(comm))
-    , cell_owner(grid.n_cells(), 0)
+    , cell_owner(grid.n_global_cells(), 0)
     , ghost_start(grid.n_cells() + 1, 0)
     , counted(grid.n_nodes(), 1)
   {}
@@ -30,6 +31,10 @@ namespace fsgmpm
   {
     const unsigned int n_cells = grid.n_cells();
     AssertThrow(points_per_cell.size() == n_cells, ExcInternalError());
+    AssertThrow(!grid.is_window(),
+                ExcMessage("METIS splits the whole grid: partition with the "
+                           "whole grid, then hand the owners to the "
+                           "windows' partitions (set_owners)."));
     if (n_processes > 1)
       {
         if (this_process == 0)
@@ -85,11 +90,11 @@ namespace fsgmpm
   void
   DomainPartition<dim>::set_owners(const std::vector<unsigned int> &owners)
   {
-    const unsigned int n_cells = grid.n_cells();
-    bool               fits    = owners.size() == n_cells;
-    for (unsigned int c = 0; fits && c < n_cells; ++c)
+    const unsigned int n_global = grid.n_global_cells();
+    bool               fits     = owners.size() == n_global;
+    for (unsigned int c = 0; fits && c < n_global; ++c)
       fits = owners[c] < n_processes
-             && owners[c] == owners[grid.cell_in_field(c, 0)];
+             && owners[c] == owners[grid.global_base_cell(c)];
     AssertThrow(fits,
                 ExcMessage("The cell owners do not fit this mesh and this "
                            "number of processes (or split the copies of a "
@@ -97,7 +102,10 @@ namespace fsgmpm
     if (&owners != &cell_owner)
       cell_owner = owners;
 
-    // The cells around every node (CSR).
+    // The cells around every node (CSR), in this grid's numbers: a whole
+    // grid or a window. A window holds every cell around a node of our own
+    // cells, so what follows is the same in both for those nodes.
+    const unsigned int        n_cells = grid.n_cells();
     const unsigned int        n_nodes = grid.n_nodes();
     std::vector<unsigned int> start(n_nodes + 1, 0), cells;
     for (unsigned int c = 0; c < n_cells; ++c)
@@ -118,16 +126,17 @@ namespace fsgmpm
     // Stored as one list with offsets (most cells have no ghost holder; a
     // vector per cell cost 24 B per cell on every process).
     std::vector<unsigned int> ranks;
+    ghost_start.assign(n_cells + 1, 0);
     ghost_list.clear();
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         ranks.clear();
         for (const unsigned int i : grid.cell_nodes[c])
           for (unsigned int j = start[i]; j < start[i + 1]; ++j)
-            ranks.push_back(cell_owner[cells[j]]);
+            ranks.push_back(owner(cells[j]));
         std::sort(ranks.begin(), ranks.end());
         ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
-        ranks.erase(std::find(ranks.begin(), ranks.end(), cell_owner[c]));
+        ranks.erase(std::find(ranks.begin(), ranks.end(), owner(c)));
         ghost_list.insert(ghost_list.end(), ranks.begin(), ranks.end());
         ghost_start[c + 1] = ghost_list.size();
       }
@@ -138,7 +147,7 @@ namespace fsgmpm
     // migrating points.
     point_neighbour_ranks.clear();
     for (unsigned int c = 0; c < n_cells; ++c)
-      if (cell_owner[c] == this_process)
+      if (owner(c) == this_process)
         point_neighbour_ranks.insert(point_neighbour_ranks.end(),
                                      ghost_holders(c).begin(),
                                      ghost_holders(c).end());
@@ -147,45 +156,56 @@ namespace fsgmpm
                                             point_neighbour_ranks.end()),
                                 point_neighbour_ranks.end());
 
-    // Node i is exact on every process owning a cell around it (set A);
-    // the processes that hold a cell around it only as a ghost (set R)
-    // receive it from the lowest-ranked process of A.
-    std::vector<std::vector<unsigned int>> send(n_processes),
-      receive(n_processes);
-    std::vector<unsigned int> around, holders;
+    // Node i is exact on every process owning a cell around it. It is
+    // counted by the lowest-ranked of them. A node of our ghost cells that
+    // is no node of ours (the rim) comes from the lowest-ranked owner of
+    // the cells around it that we hold: we cannot see all of its cells, so
+    // we ask that process for it (every owner computes the same bits).
+    std::vector<std::uint8_t> held(n_cells, 0);
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        const auto holders = ghost_holders(c);
+        held[c]            = owner(c) == this_process
+                  || std::find(holders.begin(), holders.end(), this_process)
+                       != holders.end();
+      }
+    counted.assign(n_nodes, 0);
+    std::map<unsigned int, std::vector<unsigned int>> receive, wanted;
+    std::vector<unsigned int>                         around;
     for (unsigned int i = 0; i < n_nodes; ++i)
       {
         around.clear();
-        holders.clear();
         for (unsigned int j = start[i]; j < start[i + 1]; ++j)
-          {
-            const unsigned int c = cells[j];
-            around.push_back(cell_owner[c]);
-            holders.insert(holders.end(),
-                           ghost_holders(c).begin(),
-                           ghost_holders(c).end());
-          }
+          if (held[cells[j]])
+            around.push_back(owner(cells[j]));
         if (around.empty())
           continue;
         std::sort(around.begin(), around.end());
         around.erase(std::unique(around.begin(), around.end()), around.end());
-        std::sort(holders.begin(), holders.end());
-        holders.erase(std::unique(holders.begin(), holders.end()),
-                      holders.end());
-        const unsigned int source = around.front();
-        counted[i]                = (source == this_process);
-        for (const unsigned int q : holders)
-          if (!std::binary_search(around.begin(), around.end(), q))
-            {
-              if (source == this_process)
-                send[q].push_back(i);
-              if (q == this_process)
-                receive[source].push_back(i);
-            }
+        if (std::binary_search(around.begin(), around.end(), this_process))
+          counted[i] = (around.front() == this_process);
+        else
+          {
+            receive[around.front()].push_back(i);
+            wanted[around.front()].push_back(grid.global_node(i));
+          }
+      }
+    // Whose rim nodes we compute: each process tells the owners it chose.
+    std::map<unsigned int, std::vector<unsigned int>> send;
+    for (auto &[rank, global_nodes] :
+         Utilities::MPI::some_to_some(comm, wanted))
+      {
+        auto &local = send[rank];
+        for (const unsigned int g : global_nodes)
+          {
+            const unsigned int i = grid.local_node(g);
+            AssertThrow(i != BackgroundGrid<dim>::invalid, ExcInternalError());
+            local.push_back(i);
+          }
       }
     neighbours.clear();
     for (unsigned int q = 0; q < n_processes; ++q)
-      if (!send[q].empty() || !receive[q].empty())
+      if (send.count(q) || receive.count(q))
         neighbours.push_back({q, std::move(send[q]), std::move(receive[q])});
   }
 
@@ -254,6 +274,7 @@ namespace fsgmpm
   DomainPartition<dim>::window_cells() const
   {
     std::vector<unsigned int> cells;
+    AssertThrow(!grid.is_window(), ExcMessage("Take windows of a whole grid."));
     for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
       {
         const auto holders = ghost_holders(c);

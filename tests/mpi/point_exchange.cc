@@ -475,6 +475,34 @@ namespace
         partial += (phi_mine[i] < phi_all[w.global_node(i)]);
     EXPECT_EQ(exact, owned_nodes.size());
     EXPECT_GT(partial, 0u);
+
+    // The window's own partition: the same owners, neighbours, counted
+    // nodes and halo as the whole grid's; its rim exchange completes every
+    // node of the window to the whole grid's value.
+    DomainPartition<d> window_partition(comm, w);
+    window_partition.set_owners(owners);
+    EXPECT_EQ(window_partition.point_neighbours(),
+              partition.point_neighbours());
+    EXPECT_EQ(window_partition.n_halo_nodes(), partition.n_halo_nodes());
+    EXPECT_EQ(window_partition.n_owned_cells(), partition.n_owned_cells());
+    for (unsigned int c = 0; c < w.n_cells(); ++c)
+      {
+        EXPECT_EQ(window_partition.owner(c), partition.owner(cells[c]));
+        if (window_partition.owner(c) == rank)
+          {
+            const auto a = window_partition.ghost_holders(c),
+                       b = partition.ghost_holders(cells[c]);
+            EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+          }
+      }
+    for (unsigned int i = 0; i < w.n_nodes(); ++i)
+      EXPECT_EQ(window_partition.counted_nodes()[i],
+                partition.counted_nodes()[w.global_node(i)]);
+    std::vector<double>       phi_rim = phi_mine;
+    std::vector<std::uint8_t> active(w.n_nodes(), 1);
+    window_partition.update_ghost_nodes(phi_rim, active, 1);
+    for (unsigned int i = 0; i < w.n_nodes(); ++i)
+      EXPECT_EQ(phi_rim[i], phi_all[w.global_node(i)]) << i;
   }
 } // namespace
 

@@ -109,6 +109,22 @@ namespace fsgmpm
                       : i;
     }
 
+    /// Cells of the whole grid (of all velocity fields; n_cells() in a
+    /// whole grid).
+    unsigned int
+    n_global_cells() const
+    {
+      return windowed ? n_whole_cells * n_fields : n_cells();
+    }
+
+    /// The cell of field 0 of the whole grid over the same triangle as the
+    /// whole grid's cell @p g.
+    unsigned int
+    global_base_cell(const unsigned int g) const
+    {
+      return g % (n_global_cells() / n_fields);
+    }
+
     /// The number here of the whole grid's cell @p g, or invalid if this
     /// window does not hold it.
     unsigned int

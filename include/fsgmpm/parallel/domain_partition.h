@@ -61,7 +61,7 @@ namespace fsgmpm
     void
     set_owners(const std::vector<unsigned int> &owners);
 
-    /// The owning process of every cell.
+    /// The owning process of every cell of the whole grid.
     const std::vector<unsigned int> &
     owners() const
     {
@@ -86,14 +86,17 @@ namespace fsgmpm
       return comm;
     }
 
-    /// The process that owns cell c.
+    /// The process that owns cell c (of the grid this partition was made
+    /// with: a window's number).
     unsigned int
     owner(const unsigned int c) const
     {
-      return cell_owner[c];
+      return cell_owner[grid.global_cell(c)];
     }
 
     /// The processes that hold cell c as a ghost cell (not its owner).
+    /// All of them for our own cells; in a window, a ghost cell's may miss
+    /// those that own no cell of the window.
     ArrayView<const unsigned int>
     ghost_holders(const unsigned int c) const
     {
