@@ -31,20 +31,23 @@ namespace fsgmpm
 
       template <int dim>
       void
-      pack(const ParticleStore<dim> &particles,
-           const unsigned int        p,
-           std::vector<char>        &buffer)
+      pack(const BackgroundGrid<dim> &grid,
+           const ParticleStore<dim>  &particles,
+           const unsigned int         p,
+           std::vector<char>         &buffer)
       {
         Record<dim> r;
         r.position = particles.position[p];
         r.velocity = particles.velocity[p];
         if (particles.has_affine_velocity())
           r.affine_velocity = particles.affine_velocity[p];
-        r.stress            = particles.stress[p];
-        r.mass              = particles.mass[p];
-        r.volume            = particles.volume[p];
-        r.reference_volume  = particles.reference_volume[p];
-        r.cell              = particles.cell[p];
+        r.stress           = particles.stress[p];
+        r.mass             = particles.mass[p];
+        r.volume           = particles.volume[p];
+        r.reference_volume = particles.reference_volume[p];
+        // On the way, a cell goes by its number in the whole grid: the
+        // processes may hold windows of it, numbered each their own way.
+        r.cell              = grid.global_cell(particles.cell[p]);
         r.id                = particles.id[p];
         r.material_id       = particles.material_id[p];
         r.body_id           = particles.body_id[p];
@@ -57,9 +60,10 @@ namespace fsgmpm
       /// Append the points of @p buffer; @p ghost marks them as copies.
       template <int dim>
       void
-      unpack(const std::vector<char> &buffer,
-             const std::uint8_t       ghost,
-             ParticleStore<dim>      &particles)
+      unpack(const BackgroundGrid<dim> &grid,
+             const std::vector<char>   &buffer,
+             const std::uint8_t         ghost,
+             ParticleStore<dim>        &particles)
       {
         AssertThrow(buffer.size() % sizeof(Record<dim>) == 0,
                     ExcInternalError());
@@ -75,7 +79,12 @@ namespace fsgmpm
             particles.mass.push_back(r.mass);
             particles.volume.push_back(r.volume);
             particles.reference_volume.push_back(r.reference_volume);
-            particles.cell.push_back(r.cell);
+            const unsigned int cell = grid.local_cell(r.cell);
+            AssertThrow(cell != BackgroundGrid<dim>::invalid,
+                        ExcMessage("A point arrived in cell "
+                                   + std::to_string(r.cell)
+                                   + ", which this process does not hold."));
+            particles.cell.push_back(cell);
             particles.id.push_back(r.id);
             particles.material_id.push_back(r.material_id);
             particles.body_id.push_back(r.body_id);
@@ -180,7 +189,7 @@ namespace fsgmpm
             for (unsigned int p = particles.cell_begin(c);
                  p < particles.cell_end(c);
                  ++p)
-              pack(particles, p, buffer);
+              pack(partition.get_grid(), particles, p, buffer);
           }
       // Every ghost holder of our cells is a point neighbour.
       const auto received
@@ -198,7 +207,7 @@ namespace fsgmpm
       const unsigned int n_owned = particles.size();
       particles.ghost.assign(n_owned, 0);
       for (const auto &[rank, buffer] : received)
-        unpack(buffer, 1, particles);
+        unpack(partition.get_grid(), buffer, 1, particles);
       std::vector<unsigned int> ghost_cells;
       for (unsigned int p = n_owned; p < particles.size();)
         {
@@ -284,7 +293,10 @@ namespace fsgmpm
             {
               const bool neighbour
                 = std::binary_search(neighbours.begin(), neighbours.end(), q);
-              pack(particles, p, (neighbour ? near : far)[q]);
+              pack(partition.get_grid(),
+                   particles,
+                   p,
+                   (neighbour ? near : far)[q]);
               flag[p] = leaving = true;
             }
         }
@@ -311,7 +323,7 @@ namespace fsgmpm
       if (leaving)
         particles.remove_flagged(flag);
       for (const auto &[rank, buffer] : received)
-        unpack(buffer, 0, particles);
+        unpack(partition.get_grid(), buffer, 0, particles);
       particles.sort_by_cell(particles.n_cells());
       return global[1];
     }

@@ -14,7 +14,8 @@
 // And BackgroundGrid::broadcast: the grid process 0 built, on every process.
 // And BackgroundGrid::window: the part of the grid a process needs (its
 // cells and their ghost layer, numbered on its own) gives every node of its
-// own cells the whole grid's sums bit for bit, in 2D and 3D.
+// own cells the whole grid's sums bit for bit, in 2D and 3D; its partition
+// and the points' exchange between windows agree with the whole grid's.
 
 #include <deal.II/base/mpi.h>
 
@@ -503,6 +504,51 @@ namespace
     window_partition.update_ghost_nodes(phi_rim, active, 1);
     for (unsigned int i = 0; i < w.n_nodes(); ++i)
       EXPECT_EQ(phi_rim[i], phi_all[w.global_node(i)]) << i;
+
+    // Points between windows (cells travel by their whole-grid numbers):
+    // the ghost copies, then every point moved across a face into a cell
+    // that may be another process's, arrive as between whole grids.
+    ParticleStore<d> on_whole, on_window;
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      if (owners[c] == rank)
+        {
+          const Point<d> x = grid->position(c, {});
+          on_whole.next_id = on_window.next_id = c;
+          on_whole.add(x, c, 1., 1., {}, {}, 0, 0);
+          on_window.add(x, w.local_cell(c), 1., 1., {}, {}, 0, 0);
+        }
+    const auto same_points = [&](const char *when) {
+      ASSERT_EQ(on_window.size(), on_whole.size()) << when;
+      for (unsigned int p = 0; p < on_whole.size(); ++p)
+        {
+          EXPECT_EQ(on_window.id[p], on_whole.id[p]) << when;
+          EXPECT_EQ(w.global_cell(on_window.cell[p]), on_whole.cell[p]) << when;
+        }
+    };
+    on_whole.sort_by_cell(grid->n_cells());
+    on_window.sort_by_cell(w.n_cells());
+    DistributedPoints::add_ghosts(partition, on_whole);
+    DistributedPoints::add_ghosts(window_partition, on_window);
+    EXPECT_GT(on_whole.ghost.size(), 0u);
+    same_points("ghost copies");
+    DistributedPoints::drop_ghosts(on_whole);
+    DistributedPoints::drop_ghosts(on_window);
+    // Across the face into another process's cell where there is one.
+    unsigned int n_leaving = 0;
+    for (unsigned int p = 0; p < on_whole.size(); ++p)
+      {
+        unsigned int to = on_whole.cell[p];
+        for (const unsigned int nb : grid->cell_neighbors[on_whole.cell[p]])
+          if (nb != invalid && (to == on_whole.cell[p] || owners[nb] != rank))
+            to = nb;
+        n_leaving += (owners[to] != rank);
+        on_whole.cell[p]  = to;
+        on_window.cell[p] = w.local_cell(to);
+      }
+    DistributedPoints::migrate(partition, on_whole);
+    DistributedPoints::migrate(window_partition, on_window);
+    EXPECT_GT(Utilities::MPI::sum(n_leaving, comm), 0u);
+    same_points("migration");
   }
 } // namespace
 

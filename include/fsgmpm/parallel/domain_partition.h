@@ -86,6 +86,14 @@ namespace fsgmpm
       return comm;
     }
 
+    /// The grid (whole, or this process's window) whose cell and node
+    /// numbers the partition's lists use.
+    const BackgroundGrid<dim> &
+    get_grid() const
+    {
+      return grid;
+    }
+
     /// The process that owns cell c (of the grid this partition was made
     /// with: a window's number).
     unsigned int
