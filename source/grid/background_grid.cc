@@ -252,25 +252,26 @@ namespace fsgmpm
   BackgroundGrid<dim>
   BackgroundGrid<dim>::window(const std::vector<unsigned int> &cells) const
   {
-    AssertThrow(n_fields == 1 && !windowed,
-                ExcMessage("Take windows of a whole grid, before its "
-                           "velocity fields are set."));
+    AssertThrow(!windowed, ExcMessage("Take windows of a whole grid."));
     AssertThrow(std::adjacent_find(cells.begin(),
                                    cells.end(),
                                    std::greater_equal<unsigned int>())
                     == cells.end()
-                  && (cells.empty() || cells.back() < n_cells()),
-                ExcMessage("The cells of a window must be cells of the grid, "
-                           "in ascending order, each once."));
+                  && (cells.empty() || cells.back() < n_base_cells()),
+                ExcMessage("The cells of a window must be cells of the "
+                           "grid's first velocity field, in ascending order, "
+                           "each once."));
+    // Field 0 here; the window copies it into the other fields as
+    // set_velocity_fields() does for the whole grid.
     BackgroundGrid<dim> w;
     w.windowed            = true;
-    w.n_whole_cells       = n_cells();
-    w.n_whole_nodes       = n_nodes();
+    w.n_whole_cells       = n_base_cells();
+    w.n_whole_nodes       = n_base_nodes();
     w.min_altitude_global = min_altitude_global;
     w.max_altitude_global = max_altitude_global;
     w.lower_corner        = lower_corner;
     w.upper_corner        = upper_corner;
-    w.n_colours           = n_colours;
+    w.n_colours           = n_colours / n_fields;
     w.global_cell_index   = cells;
 
     // The nodes in the whole grid's order.
@@ -284,7 +285,7 @@ namespace fsgmpm
     w.node_positions.resize(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       w.node_positions[i] = node_positions[nodes[i]];
-    if (node_volume.size() == n_nodes())
+    if (!node_volume.empty())
       {
         w.node_volume.resize(nodes.size());
         for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -310,11 +311,14 @@ namespace fsgmpm
       }
     // The mesh's own boundary faces (sorted by cell, so they stay sorted).
     for (const BoundaryFace &face : boundary_faces)
-      {
-        const unsigned int c = w.local_cell(face.cell);
-        if (c != invalid)
-          w.boundary_faces.push_back({c, face.vertex, face.boundary_id});
-      }
+      if (face.cell < n_base_cells())
+        {
+          const unsigned int c = w.local_cell(face.cell);
+          if (c != invalid)
+            w.boundary_faces.push_back({c, face.vertex, face.boundary_id});
+        }
+    if (n_fields > 1)
+      w.set_velocity_fields(n_fields);
     return w;
   }
 

@@ -550,7 +550,72 @@ namespace
     EXPECT_GT(Utilities::MPI::sum(n_leaving, comm), 0u);
     same_points("migration");
   }
+
+  // A grid with two velocity fields (multi-field contact): the window holds
+  // the same cells in both, numbered as the whole grid numbers its fields,
+  // and its partition counts the nodes of both fields as the whole grid's.
+  template <int d>
+  void
+  check_window_fields(const unsigned int n)
+  {
+    const MPI_Comm     comm    = MPI_COMM_WORLD;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const auto         grid    = test_tools::make_unit_box_grid<d>(n);
+    const auto         invalid = BackgroundGrid<d>::invalid;
+    grid->set_velocity_fields(2);
+    grid->compute_node_volumes();
+    const unsigned int        n_base = grid->n_base_cells();
+    std::vector<unsigned int> owners(grid->n_cells());
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      owners[c] = std::min<unsigned int>(
+        n_ranks - 1, grid->node_positions[grid->cell_nodes[c][0]][0] * n_ranks);
+    DomainPartition<d> partition(comm, *grid);
+    partition.set_owners(owners);
+    const std::vector<unsigned int> cells = partition.window_cells();
+    const BackgroundGrid<d>         w     = grid->window(cells);
+    ASSERT_EQ(w.n_velocity_fields(), 2u);
+    ASSERT_EQ(w.n_cells(), 2 * cells.size());
+    EXPECT_EQ(w.n_global_cells(), grid->n_cells());
+    EXPECT_EQ(w.n_colours, grid->n_colours);
+    for (unsigned int c = 0; c < w.n_cells(); ++c)
+      {
+        const unsigned int g
+          = cells[c % cells.size()] + w.field_of_cell(c) * n_base;
+        EXPECT_EQ(w.global_cell(c), g);
+        EXPECT_EQ(w.local_cell(g), c);
+        EXPECT_EQ(w.block_colour[w.cell_block(c)],
+                  grid->block_colour[grid->cell_block(g)]);
+        for (unsigned int k = 0; k < d + 1; ++k)
+          {
+            EXPECT_EQ(w.global_node(w.cell_nodes[c][k]),
+                      grid->cell_nodes[g][k]);
+            const unsigned int nb = grid->cell_neighbors[g][k];
+            EXPECT_EQ(w.cell_neighbors[c][k],
+                      nb == invalid ? invalid : w.local_cell(nb));
+          }
+      }
+    for (unsigned int i = 0; i < w.n_nodes(); ++i)
+      {
+        EXPECT_EQ(w.local_node(w.global_node(i)), i);
+        EXPECT_EQ(w.node_volume[i], grid->node_volume[w.global_node(i)]);
+      }
+    DomainPartition<d> window_partition(comm, w);
+    window_partition.set_owners(owners);
+    EXPECT_EQ(window_partition.point_neighbours(),
+              partition.point_neighbours());
+    for (unsigned int i = 0; i < w.n_nodes(); ++i)
+      EXPECT_EQ(window_partition.counted_nodes()[i],
+                partition.counted_nodes()[w.global_node(i)]);
+  }
 } // namespace
+
+
+
+TEST(GridWindow, TwoVelocityFields)
+{
+  check_window_fields<2>(12);
+  check_window_fields<3>(4);
+}
 
 
 

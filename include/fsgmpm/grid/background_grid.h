@@ -77,9 +77,10 @@ namespace fsgmpm
      * the process's share of the mesh, not of the mesh (the road to a grid
      * that no process holds whole, doc/mpi_plan.md).
      *
-     * Take windows of a whole grid without velocity fields; the nodal
-     * volumes go along if this grid has them (a window cannot compute them
-     * on its rim).
+     * @p cells are cells of the first velocity field; a grid with several
+     * fields gives a window with as many, each holding the same cells. The
+     * nodal volumes go along if this grid has them (a window cannot compute
+     * them on its rim).
      */
     BackgroundGrid<dim>
     window(const std::vector<unsigned int> &cells) const;
