@@ -252,6 +252,18 @@ namespace fsgmpm
   BackgroundGrid<dim>
   BackgroundGrid<dim>::window(const std::vector<unsigned int> &cells) const
   {
+    BackgroundGrid<dim> w = base_window(cells);
+    if (n_fields > 1)
+      w.set_velocity_fields(n_fields);
+    return w;
+  }
+
+
+
+  template <int dim>
+  BackgroundGrid<dim>
+  BackgroundGrid<dim>::base_window(const std::vector<unsigned int> &cells) const
+  {
     AssertThrow(!windowed, ExcMessage("Take windows of a whole grid."));
     AssertThrow(std::adjacent_find(cells.begin(),
                                    cells.end(),
@@ -317,8 +329,6 @@ namespace fsgmpm
           if (c != invalid)
             w.boundary_faces.push_back({c, face.vertex, face.boundary_id});
         }
-    if (n_fields > 1)
-      w.set_velocity_fields(n_fields);
     return w;
   }
 
@@ -466,6 +476,135 @@ namespace fsgmpm
     broadcast_vector(cell_neighbors, communicator, root);
     broadcast_vector(boundary_faces, communicator, root);
     broadcast_vector(block_colour, communicator, root);
+  }
+
+
+
+  namespace
+  {
+    // The bytes of a vector of plain values, point to point, in pieces of
+    // at most 1 GiB (an MPI count is an int).
+    constexpr int window_tag = 1511;
+
+    template <typename T>
+    void
+    send_vector(const std::vector<T> &values,
+                const unsigned int    rank,
+                const MPI_Comm       &communicator)
+    {
+      const std::uint64_t n = values.size();
+      int ierr = MPI_Send(&n, 1, MPI_UINT64_T, rank, window_tag, communicator);
+      AssertThrowMPI(ierr);
+      const char         *bytes = reinterpret_cast<const char *>(values.data());
+      const std::uint64_t size  = n * sizeof(T);
+      const std::uint64_t piece = std::uint64_t(1) << 30;
+      for (std::uint64_t offset = 0; offset < size; offset += piece)
+        {
+          ierr = MPI_Send(bytes + offset,
+                          static_cast<int>(std::min(piece, size - offset)),
+                          MPI_BYTE,
+                          rank,
+                          window_tag,
+                          communicator);
+          AssertThrowMPI(ierr);
+        }
+    }
+
+    template <typename T>
+    void
+    receive_vector(std::vector<T>    &values,
+                   const unsigned int root,
+                   const MPI_Comm    &communicator)
+    {
+      std::uint64_t n    = 0;
+      int           ierr = MPI_Recv(
+        &n, 1, MPI_UINT64_T, root, window_tag, communicator, MPI_STATUS_IGNORE);
+      AssertThrowMPI(ierr);
+      values.resize(n);
+      char               *bytes = reinterpret_cast<char *>(values.data());
+      const std::uint64_t size  = n * sizeof(T);
+      const std::uint64_t piece = std::uint64_t(1) << 30;
+      for (std::uint64_t offset = 0; offset < size; offset += piece)
+        {
+          ierr = MPI_Recv(bytes + offset,
+                          static_cast<int>(std::min(piece, size - offset)),
+                          MPI_BYTE,
+                          root,
+                          window_tag,
+                          communicator,
+                          MPI_STATUS_IGNORE);
+          AssertThrowMPI(ierr);
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::send_window(const std::vector<unsigned int> &cells,
+                                   const unsigned int               rank,
+                                   const MPI_Comm &communicator) const
+  {
+    const BackgroundGrid<dim> w       = base_window(cells);
+    std::vector<double>       scalars = {w.min_altitude_global,
+                                         w.max_altitude_global,
+                                         double(w.n_colours),
+                                         double(w.n_whole_cells),
+                                         double(w.n_whole_nodes),
+                                         double(n_fields)};
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        scalars.push_back(w.lower_corner[d]);
+        scalars.push_back(w.upper_corner[d]);
+      }
+    send_vector(scalars, rank, communicator);
+    send_vector(w.global_cell_index, rank, communicator);
+    send_vector(w.global_node_index, rank, communicator);
+    send_vector(w.window_block, rank, communicator);
+    send_vector(w.node_positions, rank, communicator);
+    send_vector(w.node_volume, rank, communicator);
+    send_vector(w.cell_nodes, rank, communicator);
+    send_vector(w.cell_neighbors, rank, communicator);
+    send_vector(w.boundary_faces, rank, communicator);
+    send_vector(w.block_colour, rank, communicator);
+  }
+
+
+
+  template <int dim>
+  BackgroundGrid<dim>
+  BackgroundGrid<dim>::receive_window(const unsigned int root,
+                                      const MPI_Comm    &communicator)
+  {
+    BackgroundGrid<dim> w;
+    std::vector<double> scalars;
+    receive_vector(scalars, root, communicator);
+    AssertThrow(scalars.size() == 6 + 2 * dim, ExcInternalError());
+    w.windowed            = true;
+    w.min_altitude_global = scalars[0];
+    w.max_altitude_global = scalars[1];
+    w.n_colours           = static_cast<unsigned int>(scalars[2]);
+    w.n_whole_cells       = static_cast<unsigned int>(scalars[3]);
+    w.n_whole_nodes       = static_cast<unsigned int>(scalars[4]);
+    const auto n          = static_cast<unsigned int>(scalars[5]);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        w.lower_corner[d] = scalars[6 + 2 * d];
+        w.upper_corner[d] = scalars[7 + 2 * d];
+      }
+    receive_vector(w.global_cell_index, root, communicator);
+    receive_vector(w.global_node_index, root, communicator);
+    receive_vector(w.window_block, root, communicator);
+    receive_vector(w.node_positions, root, communicator);
+    receive_vector(w.node_volume, root, communicator);
+    receive_vector(w.cell_nodes, root, communicator);
+    receive_vector(w.cell_neighbors, root, communicator);
+    receive_vector(w.boundary_faces, root, communicator);
+    receive_vector(w.block_colour, root, communicator);
+    if (n > 1)
+      w.set_velocity_fields(n);
+    return w;
   }
 
 

@@ -273,13 +273,22 @@ namespace fsgmpm
   std::vector<unsigned int>
   DomainPartition<dim>::window_cells() const
   {
+    return window_cells(this_process);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  DomainPartition<dim>::window_cells(const unsigned int process) const
+  {
     std::vector<unsigned int> cells;
     AssertThrow(!grid.is_window(), ExcMessage("Take windows of a whole grid."));
     for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
       {
         const auto holders = ghost_holders(c);
-        if (cell_owner[c] == this_process
-            || std::find(holders.begin(), holders.end(), this_process)
+        if (cell_owner[c] == process
+            || std::find(holders.begin(), holders.end(), process)
                  != holders.end())
           cells.push_back(c);
       }

@@ -558,7 +558,8 @@ namespace
 
   // A grid with two velocity fields (multi-field contact): the window holds
   // the same cells in both, numbered as the whole grid numbers its fields,
-  // and its partition counts the nodes of both fields as the whole grid's.
+  // arrives the same when process 0 sends it, and its partition counts the
+  // nodes of both fields as the whole grid's.
   template <int d>
   void
   check_window_fields(const unsigned int n)
@@ -578,6 +579,45 @@ namespace
     partition.set_owners(owners);
     const std::vector<unsigned int> cells = partition.window_cells();
     const BackgroundGrid<d>         w     = grid->window(cells);
+
+    // The same window sent by process 0, which knows every process's
+    // cells, to the others, which need no whole grid for it.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    if (rank == 0)
+      for (unsigned int r = 1; r < n_ranks; ++r)
+        grid->send_window(partition.window_cells(r), r, comm);
+    else
+      {
+        const BackgroundGrid<d> sent
+          = BackgroundGrid<d>::receive_window(0, comm);
+        EXPECT_TRUE(sent.is_window());
+        EXPECT_EQ(sent.n_velocity_fields(), 2u);
+        EXPECT_EQ(sent.node_positions, w.node_positions);
+        EXPECT_EQ(sent.node_volume, w.node_volume);
+        EXPECT_EQ(sent.cell_nodes, w.cell_nodes);
+        EXPECT_EQ(sent.cell_neighbors, w.cell_neighbors);
+        EXPECT_EQ(sent.block_colour, w.block_colour);
+        EXPECT_EQ(sent.n_colours, w.n_colours);
+        EXPECT_EQ(sent.min_altitude_global, w.min_altitude_global);
+        EXPECT_EQ(sent.max_altitude_global, w.max_altitude_global);
+        EXPECT_EQ(sent.lower_corner, w.lower_corner);
+        EXPECT_EQ(sent.upper_corner, w.upper_corner);
+        EXPECT_EQ(sent.n_global_cells(), w.n_global_cells());
+        ASSERT_EQ(sent.boundary_faces.size(), w.boundary_faces.size());
+        for (unsigned int f = 0; f < w.boundary_faces.size(); ++f)
+          {
+            EXPECT_EQ(sent.boundary_faces[f].cell, w.boundary_faces[f].cell);
+            EXPECT_EQ(sent.boundary_faces[f].boundary_id,
+                      w.boundary_faces[f].boundary_id);
+          }
+        for (unsigned int c = 0; c < w.n_cells(); ++c)
+          {
+            EXPECT_EQ(sent.global_cell(c), w.global_cell(c));
+            EXPECT_EQ(sent.cell_block(c), w.cell_block(c));
+          }
+        for (unsigned int i = 0; i < w.n_nodes(); ++i)
+          EXPECT_EQ(sent.global_node(i), w.global_node(i));
+      }
     ASSERT_EQ(w.n_velocity_fields(), 2u);
     ASSERT_EQ(w.n_cells(), 2 * cells.size());
     EXPECT_EQ(w.n_global_cells(), grid->n_cells());
@@ -672,7 +712,7 @@ TEST(GridWindowSize, DamBreakGrids)
 
 
 
-TEST(GridWindow, TwoVelocityFields)
+TEST(GridWindow, TwoVelocityFieldsAndSentFromProcessZero)
 {
   check_window_fields<2>(12);
   check_window_fields<3>(4);

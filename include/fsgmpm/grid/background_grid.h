@@ -85,6 +85,21 @@ namespace fsgmpm
     BackgroundGrid<dim>
     window(const std::vector<unsigned int> &cells) const;
 
+    /**
+     * MPI: send process @p rank of @p communicator its window() of this
+     * (whole) grid, the cells @p cells; it calls receive_window(). Only
+     * the window travels (field 0 of it; the receiver copies the other
+     * velocity fields), so no process but the sender holds the whole grid.
+     */
+    void
+    send_window(const std::vector<unsigned int> &cells,
+                const unsigned int               rank,
+                const MPI_Comm                  &communicator) const;
+
+    /// The window process @p root sends with send_window().
+    static BackgroundGrid<dim>
+    receive_window(const unsigned int root, const MPI_Comm &communicator);
+
     /// Whether this grid is a window() of a whole grid.
     bool
     is_window() const
@@ -337,6 +352,10 @@ namespace fsgmpm
     std::vector<unsigned int> global_cell_index, global_node_index;
     unsigned int              n_whole_cells = 0, n_whole_nodes = 0;
     std::vector<unsigned int> window_block;
+
+    /// window() of field 0 only.
+    BackgroundGrid<dim>
+    base_window(const std::vector<unsigned int> &cells) const;
 
     unsigned int
     base_cell_block(const unsigned int c) const

@@ -174,6 +174,11 @@ namespace fsgmpm
     std::vector<unsigned int>
     window_cells() const;
 
+    /// window_cells() of process @p process (of a whole grid: each cell's
+    /// ghost holders are all known there).
+    std::vector<unsigned int>
+    window_cells(const unsigned int process) const;
+
   private:
     MPI_Comm                   comm;
     const BackgroundGrid<dim> &grid;
