@@ -334,19 +334,34 @@ namespace fsgmpm
 
 
 
+  namespace
+  {
+    // The number in a window of the whole grid's cell or node g: fields of
+    // n_whole numbers there, of index.size() here, index the whole grid's
+    // numbers of field 0 (ascending); invalid if the window lacks it.
+    unsigned int
+    window_number(const std::vector<unsigned int> &index,
+                  const unsigned int               n_whole,
+                  const unsigned int               n_fields,
+                  const unsigned int               g)
+    {
+      const unsigned int base = g % n_whole, field = g / n_whole;
+      const auto it = std::lower_bound(index.begin(), index.end(), base);
+      if (field >= n_fields || it == index.end() || *it != base)
+        return numbers::invalid_unsigned_int;
+      return (it - index.begin()) + field * index.size();
+    }
+  } // namespace
+
+
+
   template <int dim>
   unsigned int
   BackgroundGrid<dim>::local_cell(const unsigned int g) const
   {
     if (!windowed)
       return g < n_cells() ? g : invalid;
-    const unsigned int base = g % n_whole_cells, field = g / n_whole_cells;
-    const auto         it = std::lower_bound(global_cell_index.begin(),
-                                     global_cell_index.end(),
-                                     base);
-    if (field >= n_fields || it == global_cell_index.end() || *it != base)
-      return invalid;
-    return (it - global_cell_index.begin()) + field * n_base_cells();
+    return window_number(global_cell_index, n_whole_cells, n_fields, g);
   }
 
 
@@ -357,13 +372,7 @@ namespace fsgmpm
   {
     if (!windowed)
       return g < n_nodes() ? g : invalid;
-    const unsigned int base = g % n_whole_nodes, field = g / n_whole_nodes;
-    const auto         it = std::lower_bound(global_node_index.begin(),
-                                     global_node_index.end(),
-                                     base);
-    if (field >= n_fields || it == global_node_index.end() || *it != base)
-      return invalid;
-    return (it - global_node_index.begin()) + field * n_base_nodes();
+    return window_number(global_node_index, n_whole_nodes, n_fields, g);
   }
 
 
@@ -414,6 +423,17 @@ namespace fsgmpm
 
   namespace
   {
+    // Call f(offset, count) for the pieces of at most 1 GiB of @p size
+    // bytes (an MPI count is an int).
+    template <typename Function>
+    void
+    for_each_piece(const std::uint64_t size, const Function &f)
+    {
+      const std::uint64_t piece = std::uint64_t(1) << 30;
+      for (std::uint64_t offset = 0; offset < size; offset += piece)
+        f(offset, static_cast<int>(std::min(piece, size - offset)));
+    }
+
     // The bytes of a vector of plain values from process root to all, in
     // pieces of at most 1 GiB (an MPI count is an int).
     template <typename T>
@@ -426,18 +446,12 @@ namespace fsgmpm
       int           ierr = MPI_Bcast(&n, 1, MPI_UINT64_T, root, communicator);
       AssertThrowMPI(ierr);
       values.resize(n);
-      char               *bytes = reinterpret_cast<char *>(values.data());
-      const std::uint64_t size  = n * sizeof(T);
-      const std::uint64_t piece = std::uint64_t(1) << 30;
-      for (std::uint64_t offset = 0; offset < size; offset += piece)
-        {
-          ierr = MPI_Bcast(bytes + offset,
-                           static_cast<int>(std::min(piece, size - offset)),
-                           MPI_BYTE,
-                           root,
-                           communicator);
+      char *bytes = reinterpret_cast<char *>(values.data());
+      for_each_piece(
+        n * sizeof(T), [&](const std::uint64_t offset, const int count) {
+          ierr = MPI_Bcast(bytes + offset, count, MPI_BYTE, root, communicator);
           AssertThrowMPI(ierr);
-        }
+        });
     }
   } // namespace
 
@@ -482,8 +496,7 @@ namespace fsgmpm
 
   namespace
   {
-    // The bytes of a vector of plain values, point to point, in pieces of
-    // at most 1 GiB (an MPI count is an int).
+    // The bytes of a vector of plain values, point to point, in pieces.
     constexpr int window_tag = 1511;
 
     template <typename T>
@@ -495,19 +508,17 @@ namespace fsgmpm
       const std::uint64_t n = values.size();
       int ierr = MPI_Send(&n, 1, MPI_UINT64_T, rank, window_tag, communicator);
       AssertThrowMPI(ierr);
-      const char         *bytes = reinterpret_cast<const char *>(values.data());
-      const std::uint64_t size  = n * sizeof(T);
-      const std::uint64_t piece = std::uint64_t(1) << 30;
-      for (std::uint64_t offset = 0; offset < size; offset += piece)
-        {
-          ierr = MPI_Send(bytes + offset,
-                          static_cast<int>(std::min(piece, size - offset)),
-                          MPI_BYTE,
-                          rank,
-                          window_tag,
-                          communicator);
-          AssertThrowMPI(ierr);
-        }
+      const char *bytes = reinterpret_cast<const char *>(values.data());
+      for_each_piece(n * sizeof(T),
+                     [&](const std::uint64_t offset, const int count) {
+                       ierr = MPI_Send(bytes + offset,
+                                       count,
+                                       MPI_BYTE,
+                                       rank,
+                                       window_tag,
+                                       communicator);
+                       AssertThrowMPI(ierr);
+                     });
     }
 
     template <typename T>
@@ -521,20 +532,18 @@ namespace fsgmpm
         &n, 1, MPI_UINT64_T, root, window_tag, communicator, MPI_STATUS_IGNORE);
       AssertThrowMPI(ierr);
       values.resize(n);
-      char               *bytes = reinterpret_cast<char *>(values.data());
-      const std::uint64_t size  = n * sizeof(T);
-      const std::uint64_t piece = std::uint64_t(1) << 30;
-      for (std::uint64_t offset = 0; offset < size; offset += piece)
-        {
-          ierr = MPI_Recv(bytes + offset,
-                          static_cast<int>(std::min(piece, size - offset)),
-                          MPI_BYTE,
-                          root,
-                          window_tag,
-                          communicator,
-                          MPI_STATUS_IGNORE);
-          AssertThrowMPI(ierr);
-        }
+      char *bytes = reinterpret_cast<char *>(values.data());
+      for_each_piece(n * sizeof(T),
+                     [&](const std::uint64_t offset, const int count) {
+                       ierr = MPI_Recv(bytes + offset,
+                                       count,
+                                       MPI_BYTE,
+                                       root,
+                                       window_tag,
+                                       communicator,
+                                       MPI_STATUS_IGNORE);
+                       AssertThrowMPI(ierr);
+                     });
     }
   } // namespace
 

@@ -327,6 +327,29 @@ main(int argc, char **argv)
 
 namespace
 {
+  // Window cell c is the whole grid's cell g: the same nodes, neighbours
+  // (where the window holds them) and colour.
+  template <int d>
+  void
+  expect_same_cell(const BackgroundGrid<d> &whole,
+                   const BackgroundGrid<d> &w,
+                   const unsigned int       c,
+                   const unsigned int       g)
+  {
+    const auto invalid = BackgroundGrid<d>::invalid;
+    EXPECT_EQ(w.global_cell(c), g);
+    EXPECT_EQ(w.local_cell(g), c);
+    EXPECT_EQ(w.block_colour[w.cell_block(c)],
+              whole.block_colour[whole.cell_block(g)]);
+    for (unsigned int k = 0; k < d + 1; ++k)
+      {
+        EXPECT_EQ(w.global_node(w.cell_nodes[c][k]), whole.cell_nodes[g][k]);
+        const unsigned int nb = whole.cell_neighbors[g][k];
+        EXPECT_EQ(w.cell_neighbors[c][k],
+                  nb == invalid ? invalid : w.local_cell(nb));
+      }
+  }
+
   // Windows of a box in vertical strips (process r owns the cells whose
   // centre has r/P <= x < (r+1)/P): the window holds what DomainPartition
   // says, maps back to the whole grid, keeps its blocks' colours, and a
@@ -389,18 +412,7 @@ namespace
     for (unsigned int c = 0; c < w.n_cells(); ++c)
       {
         const unsigned int g = cells[c];
-        EXPECT_EQ(w.global_cell(c), g);
-        EXPECT_EQ(w.local_cell(g), c);
-        for (unsigned int k = 0; k < d + 1; ++k)
-          {
-            EXPECT_EQ(w.global_node(w.cell_nodes[c][k]),
-                      grid->cell_nodes[g][k]);
-            const unsigned int nb = grid->cell_neighbors[g][k];
-            EXPECT_EQ(w.cell_neighbors[c][k],
-                      nb == invalid ? invalid : w.local_cell(nb));
-          }
-        EXPECT_EQ(w.block_colour[w.cell_block(c)],
-                  grid->block_colour[grid->cell_block(g)]);
+        expect_same_cell(*grid, w, c, g);
         if (c > 0)
           {
             const bool same_block
@@ -567,7 +579,6 @@ namespace
     const MPI_Comm     comm    = MPI_COMM_WORLD;
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const auto         grid    = test_tools::make_unit_box_grid<d>(n);
-    const auto         invalid = BackgroundGrid<d>::invalid;
     grid->set_velocity_fields(2);
     grid->compute_node_volumes();
     const unsigned int        n_base = grid->n_base_cells();
@@ -624,20 +635,10 @@ namespace
     EXPECT_EQ(w.n_colours, grid->n_colours);
     for (unsigned int c = 0; c < w.n_cells(); ++c)
       {
-        const unsigned int g
-          = cells[c % cells.size()] + w.field_of_cell(c) * n_base;
-        EXPECT_EQ(w.global_cell(c), g);
-        EXPECT_EQ(w.local_cell(g), c);
-        EXPECT_EQ(w.block_colour[w.cell_block(c)],
-                  grid->block_colour[grid->cell_block(g)]);
-        for (unsigned int k = 0; k < d + 1; ++k)
-          {
-            EXPECT_EQ(w.global_node(w.cell_nodes[c][k]),
-                      grid->cell_nodes[g][k]);
-            const unsigned int nb = grid->cell_neighbors[g][k];
-            EXPECT_EQ(w.cell_neighbors[c][k],
-                      nb == invalid ? invalid : w.local_cell(nb));
-          }
+        expect_same_cell(*grid,
+                         w,
+                         c,
+                         cells[c % cells.size()] + w.field_of_cell(c) * n_base);
       }
     for (unsigned int i = 0; i < w.n_nodes(); ++i)
       {
