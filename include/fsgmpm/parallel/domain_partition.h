@@ -35,9 +35,14 @@ namespace fsgmpm
    * evolve exactly as their originals, and an MPI run repeats the serial
    * run's arithmetic.
    *
-   * This first version keeps the whole background grid on every process
+   * A run still keeps the whole background grid on every process
    * (memory O(mesh) per process, about 90 B per triangle; the points are
-   * distributed). With multi-field contact the copies of a cell in the
+   * distributed). The partition works on a process's window of the grid
+   * too (BackgroundGrid::window(), window_cells()): the owners stay an
+   * array over the whole grid (4 B per cell), the rest comes from the cells
+   * the window holds, and a rim node is asked of one of its owners once
+   * per partition (doc/mpi.md, "Grid windows"; no run uses windows yet).
+   * With multi-field contact the copies of a cell in the
    * other velocity fields belong to the base cell's owner; a membrane is
    * held whole by every process (MembraneCoupling).
    */
