@@ -214,7 +214,7 @@ namespace fsgmpm
     if (node_volume.size() == n_nodes())
       return;
     // A rim node of a window misses the volumes of cells further out.
-    AssertThrow(!windowed,
+    AssertThrow(!is_window(),
                 ExcMessage("Compute the nodal volumes of the whole grid "
                            "before taking its windows."));
     node_volume.assign(n_nodes(), 0.);
@@ -264,7 +264,7 @@ namespace fsgmpm
   BackgroundGrid<dim>
   BackgroundGrid<dim>::base_window(const std::vector<unsigned int> &cells) const
   {
-    AssertThrow(!windowed, ExcMessage("Take windows of a whole grid."));
+    AssertThrow(!is_window(), ExcMessage("Take windows of a whole grid."));
     AssertThrow(std::adjacent_find(cells.begin(),
                                    cells.end(),
                                    std::greater_equal<unsigned int>())
@@ -276,7 +276,6 @@ namespace fsgmpm
     // Field 0 here; the window copies it into the other fields as
     // set_velocity_fields() does for the whole grid.
     BackgroundGrid<dim> w;
-    w.windowed            = true;
     w.n_whole_cells       = n_base_cells();
     w.n_whole_nodes       = n_base_nodes();
     w.min_altitude_global = min_altitude_global;
@@ -359,7 +358,7 @@ namespace fsgmpm
   unsigned int
   BackgroundGrid<dim>::local_cell(const unsigned int g) const
   {
-    if (!windowed)
+    if (!is_window())
       return g < n_cells() ? g : invalid;
     return window_number(global_cell_index, n_whole_cells, n_fields, g);
   }
@@ -370,7 +369,7 @@ namespace fsgmpm
   unsigned int
   BackgroundGrid<dim>::local_node(const unsigned int g) const
   {
-    if (!windowed)
+    if (!is_window())
       return g < n_nodes() ? g : invalid;
     return window_number(global_node_index, n_whole_nodes, n_fields, g);
   }
@@ -462,7 +461,7 @@ namespace fsgmpm
   BackgroundGrid<dim>::broadcast(const MPI_Comm    &communicator,
                                  const unsigned int root)
   {
-    AssertThrow(n_fields == 1 && !windowed,
+    AssertThrow(n_fields == 1 && !is_window(),
                 ExcMessage("Broadcast a whole grid, before its velocity "
                            "fields."));
     std::vector<double> scalars;
@@ -568,15 +567,9 @@ namespace fsgmpm
         scalars.push_back(w.upper_corner[d]);
       }
     send_vector(scalars, rank, communicator);
-    send_vector(w.global_cell_index, rank, communicator);
-    send_vector(w.global_node_index, rank, communicator);
-    send_vector(w.window_block, rank, communicator);
-    send_vector(w.node_positions, rank, communicator);
-    send_vector(w.node_volume, rank, communicator);
-    send_vector(w.cell_nodes, rank, communicator);
-    send_vector(w.cell_neighbors, rank, communicator);
-    send_vector(w.boundary_faces, rank, communicator);
-    send_vector(w.block_colour, rank, communicator);
+    for_each_window_array(w, [&](const auto &values) {
+      send_vector(values, rank, communicator);
+    });
   }
 
 
@@ -590,7 +583,6 @@ namespace fsgmpm
     std::vector<double> scalars;
     receive_vector(scalars, root, communicator);
     AssertThrow(scalars.size() == 6 + 2 * dim, ExcInternalError());
-    w.windowed            = true;
     w.min_altitude_global = scalars[0];
     w.max_altitude_global = scalars[1];
     w.n_colours           = static_cast<unsigned int>(scalars[2]);
@@ -602,15 +594,9 @@ namespace fsgmpm
         w.lower_corner[d] = scalars[6 + 2 * d];
         w.upper_corner[d] = scalars[7 + 2 * d];
       }
-    receive_vector(w.global_cell_index, root, communicator);
-    receive_vector(w.global_node_index, root, communicator);
-    receive_vector(w.window_block, root, communicator);
-    receive_vector(w.node_positions, root, communicator);
-    receive_vector(w.node_volume, root, communicator);
-    receive_vector(w.cell_nodes, root, communicator);
-    receive_vector(w.cell_neighbors, root, communicator);
-    receive_vector(w.boundary_faces, root, communicator);
-    receive_vector(w.block_colour, root, communicator);
+    for_each_window_array(w, [&](auto &values) {
+      receive_vector(values, root, communicator);
+    });
     if (n > 1)
       w.set_velocity_fields(n);
     return w;

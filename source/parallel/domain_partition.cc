@@ -163,12 +163,7 @@ namespace fsgmpm
     // we ask that process for it (every owner computes the same bits).
     std::vector<std::uint8_t> held(n_cells, 0);
     for (unsigned int c = 0; c < n_cells; ++c)
-      {
-        const auto holders = ghost_holders(c);
-        held[c]            = owner(c) == this_process
-                  || std::find(holders.begin(), holders.end(), this_process)
-                       != holders.end();
-      }
+      held[c] = holds(c, this_process);
     counted.assign(n_nodes, 0);
     std::map<unsigned int, std::vector<unsigned int>> receive, wanted;
     std::vector<unsigned int>                         around;
@@ -285,13 +280,8 @@ namespace fsgmpm
     std::vector<unsigned int> cells;
     AssertThrow(!grid.is_window(), ExcMessage("Take windows of a whole grid."));
     for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
-      {
-        const auto holders = ghost_holders(c);
-        if (cell_owner[c] == process
-            || std::find(holders.begin(), holders.end(), process)
-                 != holders.end())
-          cells.push_back(c);
-      }
+      if (holds(c, process))
+        cells.push_back(c);
     return cells;
   }
 

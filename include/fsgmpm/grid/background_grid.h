@@ -104,25 +104,25 @@ namespace fsgmpm
     bool
     is_window() const
     {
-      return windowed;
+      return n_whole_cells > 0;
     }
 
     /// The number in the whole grid of cell @p c (itself in a whole grid).
     unsigned int
     global_cell(const unsigned int c) const
     {
-      return windowed ? global_cell_index[c % n_base_cells()]
-                          + field_of_cell(c) * n_whole_cells
-                      : c;
+      return is_window() ? global_cell_index[c % n_base_cells()]
+                             + field_of_cell(c) * n_whole_cells
+                         : c;
     }
 
     /// The number in the whole grid of node @p i (itself in a whole grid).
     unsigned int
     global_node(const unsigned int i) const
     {
-      return windowed ? global_node_index[i % n_base_nodes()]
-                          + (i / n_base_nodes()) * n_whole_nodes
-                      : i;
+      return is_window() ? global_node_index[i % n_base_nodes()]
+                             + (i / n_base_nodes()) * n_whole_nodes
+                         : i;
     }
 
     /// Cells of the whole grid (of all velocity fields; n_cells() in a
@@ -130,7 +130,7 @@ namespace fsgmpm
     unsigned int
     n_global_cells() const
     {
-      return windowed ? n_whole_cells * n_fields : n_cells();
+      return is_window() ? n_whole_cells * n_fields : n_cells();
     }
 
     /// The cell of field 0 of the whole grid over the same triangle as the
@@ -347,8 +347,8 @@ namespace fsgmpm
     /// A window's cells and nodes by their numbers in the whole grid
     /// (ascending), the whole grid's sizes, and each cell's block (its
     /// blocks are the whole grid's blocks it meets, in order). All empty or
-    /// zero in a whole grid.
-    bool                      windowed = false;
+    /// zero in a whole grid (which has cells: n_whole_cells > 0 marks a
+    /// window).
     std::vector<unsigned int> global_cell_index, global_node_index;
     unsigned int              n_whole_cells = 0, n_whole_nodes = 0;
     std::vector<unsigned int> window_block;
@@ -357,10 +357,28 @@ namespace fsgmpm
     BackgroundGrid<dim>
     base_window(const std::vector<unsigned int> &cells) const;
 
+    /// Call f(v) for every array a window sends (send_window(),
+    /// receive_window()): one list, so the two cannot disagree. @p Grid is
+    /// BackgroundGrid or its const.
+    template <typename Grid, typename Function>
+    static void
+    for_each_window_array(Grid &w, const Function &f)
+    {
+      f(w.global_cell_index);
+      f(w.global_node_index);
+      f(w.window_block);
+      f(w.node_positions);
+      f(w.node_volume);
+      f(w.cell_nodes);
+      f(w.cell_neighbors);
+      f(w.boundary_faces);
+      f(w.block_colour);
+    }
+
     unsigned int
     base_cell_block(const unsigned int c) const
     {
-      return windowed ? window_block[c] : c / cells_per_block;
+      return is_window() ? window_block[c] : c / cells_per_block;
     }
 
     void

@@ -7,6 +7,7 @@
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/parallel/values_of_owners.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -207,6 +208,16 @@ namespace fsgmpm
 
     void
     exchange_bytes() const;
+
+    /// Whether @p process holds cell @p c: owns it, or holds it as a ghost.
+    bool
+    holds(const unsigned int c, const unsigned int process) const
+    {
+      const auto holders = ghost_holders(c);
+      return owner(c) == process
+             || std::find(holders.begin(), holders.end(), process)
+                  != holders.end();
+    }
   };
 
 
