@@ -117,6 +117,7 @@ namespace fsgmpm
     // others, which never hold the mesh (its creation is the peak of a
     // process's memory). An error there stops every process (main()).
     const bool several = Parallel::n_processes(MPI_COMM_WORLD) > 1;
+    root = !several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     if (!several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         Triangulation<dim> triangulation;
@@ -214,7 +215,6 @@ namespace fsgmpm
   {
     if (Parallel::n_processes(MPI_COMM_WORLD) == 1)
       return;
-    root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
     const std::string n_ranks
       = std::to_string(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
     auto refuse = [&](const bool ok, const std::string &what) {
@@ -283,15 +283,22 @@ namespace fsgmpm
     if (params.repartition_imbalance == 0
         || imbalance <= params.repartition_imbalance)
       return;
-    std::vector<unsigned int> local(grid->n_cells(), 0),
-      points_per_cell(grid->n_cells(), 0);
+    // The points of every cell of the whole grid, for METIS on process 0.
+    std::vector<unsigned int> local(grid->n_global_cells(), 0),
+      points_per_cell(grid->n_global_cells(), 0);
     for (const unsigned int c : particles.occupied_cells)
-      local[c] = particles.cell_end(c) - particles.cell_begin(c);
+      local[grid->global_cell(c)]
+        = particles.cell_end(c) - particles.cell_begin(c);
     Utilities::MPI::sum(make_array_view(std::as_const(local)),
                         comm,
                         make_array_view(points_per_cell));
-    partition->partition(points_per_cell);
-    DistributedPoints::migrate(*partition, particles);
+    const std::vector<unsigned int> owners
+      = DomainPartition<dim>::split(whole_grid ? *whole_grid : *grid,
+                                    points_per_cell,
+                                    comm);
+    for (unsigned int &c : particles.cell)
+      c = grid->global_cell(c);
+    adopt_owners(owners);
     ++n_repartitions;
   }
 
@@ -464,14 +471,16 @@ namespace fsgmpm
       fill_bodies(&store_none, &points_per_cell);
     }
     std::vector<std::uint8_t> mine; // empty: keep every point (serial)
+    std::vector<unsigned int> owners;
     if (Parallel::n_processes(MPI_COMM_WORLD) > 1)
       {
-        partition
-          = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
-        partition->partition(points_per_cell);
+        owners
+          = DomainPartition<dim>::split(*grid, points_per_cell, MPI_COMM_WORLD);
+        const unsigned int rank
+          = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
         mine.resize(grid->n_base_cells());
         for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
-          mine[c] = partition->owner(c) == partition->rank();
+          mine[c] = owners[c] == rank;
       }
     unsigned int n_kept = 0;
     for (unsigned int c = 0; c < grid->n_cells(); ++c)
@@ -488,6 +497,52 @@ namespace fsgmpm
     if (params.use_apic)
       particles.enable_affine_velocity();
     particles.sort_by_cell(grid->n_cells());
+    if (!owners.empty())
+      {
+        partition
+          = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
+        adopt_owners(owners);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::adopt_owners(const std::vector<unsigned int> &owners)
+  {
+    const MPI_Comm comm = partition->get_communicator();
+    // Every process checks the owners before any of them waits for a
+    // window, so that bad ones (a checkpoint's) stop all alike.
+    DomainPartition<dim>::check_owners(*grid, owners, partition->n_ranks());
+    if (!membrane)
+      {
+        if (root && !whole_grid)
+          whole_grid = std::make_unique<BackgroundGrid<dim>>(std::move(*grid));
+        // In place: the step and the constraints refer to *grid.
+        if (root)
+          {
+            for (unsigned int q = 1; q < partition->n_ranks(); ++q)
+              whole_grid->send_window(
+                DomainPartition<dim>::window_cells(*whole_grid, owners, q),
+                q,
+                comm);
+            *grid = whole_grid->window(
+              DomainPartition<dim>::window_cells(*whole_grid, owners, 0));
+          }
+        else
+          *grid = BackgroundGrid<dim>::receive_window(0, comm);
+        *constraints
+          = NodalConstraints<dim>(*grid, params.walls, params.moving_wall);
+        constraints->set_time(time);
+        nodes.resize(grid->n_nodes());
+        smoothing.resize(materials.size(), grid->n_nodes());
+      }
+    partition = std::make_unique<DomainPartition<dim>>(comm, *grid);
+    partition->set_owners(owners);
+    DistributedPoints::move_to_owners(*partition, particles);
+    if (mpm_step)
+      mpm_step->attach_partition(*partition);
   }
 
 
@@ -913,7 +968,8 @@ namespace fsgmpm
                     *grid,
                     nodes,
                     membrane.get(),
-                    partition && params.write_grid ? &all_nodes : nullptr);
+                    partition && params.write_grid ? &all_nodes : nullptr,
+                    whole_grid.get());
     };
     if (resumed)
       output->restore(resume_output);
@@ -930,8 +986,8 @@ namespace fsgmpm
       const unsigned int n_points = n_global_particles();
       if (verbose)
         std::cout << "fsgmpm: " << dim << "D, " << n_points
-                  << " material points, " << grid->n_cells() << " cells, "
-                  << MultithreadInfo::n_threads() << " threads"
+                  << " material points, " << grid->n_global_cells()
+                  << " cells, " << MultithreadInfo::n_threads() << " threads"
                   << (partition ? " x " + std::to_string(partition->n_ranks())
                                     + " MPI processes"
                                 : std::string())
@@ -1074,7 +1130,8 @@ namespace fsgmpm
     if (particles.size() == 0)
       return 0;
     return double(grid->memory_consumption() + nodes.memory_consumption()
-                  + smoothing.memory_consumption())
+                  + smoothing.memory_consumption()
+                  + (whole_grid ? whole_grid->memory_consumption() : 0))
            / particles.size();
   }
 

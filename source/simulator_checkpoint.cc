@@ -137,7 +137,7 @@ namespace fsgmpm
       out.put("cost/particle_updates", double(particle_updates));
       out.put("cost/checkpoint_seconds", checkpoint_seconds);
 
-      StateCheckpoint::save(out, particles);
+      StateCheckpoint::save(out, particles, *grid);
       if (partition)
         {
           out.put("mpi/ranks", std::vector<unsigned int>{partition->n_ranks()});
@@ -289,7 +289,9 @@ namespace fsgmpm
       = static_cast<unsigned long long>(in.scalar("cost/particle_updates"));
     checkpoint_seconds = in.scalar("cost/checkpoint_seconds");
 
-    StateCheckpoint::load(in, particles, grid->n_cells());
+    // The points' cells are numbers in the whole grid (a process may hold
+    // a window of it) until adopt_owners() below.
+    StateCheckpoint::load(in, particles, grid->n_global_cells());
     if (membrane)
       {
         StateCheckpoint::load(in, *membrane);
@@ -306,14 +308,16 @@ namespace fsgmpm
         const MPI_Comm     communicator = partition->get_communicator();
         const unsigned int ranks
           = in.has("mpi/ranks") ? in.uints("mpi/ranks").at(0) : 1;
+        std::vector<unsigned int> owners;
         if (ranks == partition->n_ranks())
           {
-            partition->set_owners(in.uints("mpi/cell_owner"));
+            owners         = in.uints("mpi/cell_owner");
             n_repartitions = in.uints("mpi/repartitions").at(0);
           }
         else
           {
-            std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
+            std::vector<unsigned int> points_per_cell(grid->n_global_cells(),
+                                                      0);
             for (const unsigned int c : particles.occupied_cells)
               points_per_cell[c]
                 = particles.cell_end(c) - particles.cell_begin(c);
@@ -321,16 +325,26 @@ namespace fsgmpm
               Utilities::MPI::sum(points_per_cell,
                                   communicator,
                                   points_per_cell);
-            partition->partition(points_per_cell);
+            owners
+              = DomainPartition<dim>::split(whole_grid ? *whole_grid : *grid,
+                                            points_per_cell,
+                                            communicator);
           }
         if (in.rows_split())
-          {
-            particles.next_id
-              = Utilities::MPI::max(particles.next_id, communicator);
-            DistributedPoints::migrate(*partition, particles);
-          }
+          particles.next_id
+            = Utilities::MPI::max(particles.next_id, communicator);
         else
-          DistributedPoints::keep_owned(*partition, particles);
+          {
+            // Every process read all points: it keeps those of its cells.
+            DomainPartition<dim>::check_owners(*grid,
+                                               owners,
+                                               partition->n_ranks());
+            std::vector<std::uint8_t> flag(particles.size());
+            for (unsigned int p = 0; p < particles.size(); ++p)
+              flag[p] = owners[particles.cell[p]] != partition->rank();
+            particles.remove_flagged(flag);
+          }
+        adopt_owners(owners);
         DistributedPoints::add_ghosts(*partition, particles);
       }
     // The nodal fields of the first step after the restart are rebuilt

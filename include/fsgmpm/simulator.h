@@ -94,6 +94,8 @@ namespace fsgmpm
     {
       return particles;
     }
+    /// The grid the step runs on: the whole grid, or in an MPI run of a
+    /// scene without a membrane this process's window of it.
     const BackgroundGrid<dim> &
     get_grid() const
     {
@@ -178,6 +180,13 @@ namespace fsgmpm
     get_converged_steps() const
     {
       return relaxation.converged_steps();
+    }
+    /// MPI: how often the cells were split again (Simulation/Repartition
+    /// imbalance).
+    unsigned int
+    get_n_repartitions() const
+    {
+      return n_repartitions;
     }
     const Parameters<dim> &
     get_parameters() const
@@ -281,10 +290,25 @@ namespace fsgmpm
     /// @p point_counts: the points per process (sum and maximum).
     void
     rebalance(const Utilities::MPI::MinMaxAvg &point_counts);
+    /**
+     * MPI: take @p owners (of the cells of the whole grid) as the
+     * partition, and move the points, whose cells are numbered in the
+     * whole grid on entry, to their owners. A scene without a membrane
+     * then holds only its window of the grid (DomainPartition::
+     * window_cells()), which process 0 cuts from the whole grid and sends;
+     * process 0 keeps the whole grid (whole_grid) for METIS and the grid's
+     * output. A membrane reaches over the whole grid: its scenes keep it.
+     */
+    void
+    adopt_owners(const std::vector<unsigned int> &owners);
 
-    Parameters<dim>                        params;
-    std::vector<BodyDescription<dim>>      bodies;
-    std::unique_ptr<BackgroundGrid<dim>>   grid;
+    Parameters<dim>                   params;
+    std::vector<BodyDescription<dim>> bodies;
+    /// The grid the step runs on: the whole grid, or with MPI (scenes
+    /// without a membrane) this process's window of it (adopt_owners()).
+    std::unique_ptr<BackgroundGrid<dim>> grid;
+    /// Process 0 of an MPI run on windows: the whole grid.
+    std::unique_ptr<BackgroundGrid<dim>>   whole_grid;
     std::unique_ptr<NodalConstraints<dim>> constraints;
     NodalFields<dim>                       nodes;
     ParticleStore<dim>                     particles;

@@ -210,6 +210,10 @@ namespace fsgmpm
         plane_nodes.push_back(i);
     active.assign(grid.n_nodes(), 0);
     set_time(0.);
+    // A process's window of the grid (MPI) may hold none of the wall: the
+    // whole grid was checked at the start of the run.
+    if (grid.is_window())
+      return;
     AssertThrow(n_active > 0,
                 ExcMessage(where
                            + " holds no grid node inside the wall's "

@@ -51,7 +51,8 @@ namespace fsgmpm
                         const BackgroundGrid<dim> &grid,
                         const NodalFields<dim>    &nodes,
                         const Membrane<dim>       *membrane,
-                        const NodalFields<dim>    *grid_nodes)
+                        const NodalFields<dim>    *grid_nodes,
+                        const BackgroundGrid<dim> *whole_grid)
   {
     const std::string &dir = settings.directory;
     if (settings.write_particles)
@@ -86,7 +87,7 @@ namespace fsgmpm
     if (settings.write_grid)
       {
         const std::string name = grid_series.next_file(time);
-        write_grid_vtu(grid,
+        write_grid_vtu(whole_grid != nullptr ? *whole_grid : grid,
                        grid_nodes != nullptr ? *grid_nodes : nodes,
                        dir + "/" + name);
         grid_series.write_pvd();

@@ -8,7 +8,9 @@ namespace fsgmpm
   {
     template <int dim>
     void
-    save(CheckpointWriter &out, const ParticleStore<dim> &p)
+    save(CheckpointWriter          &out,
+         const ParticleStore<dim>  &p,
+         const BackgroundGrid<dim> &grid)
     {
       // One row per point; with MPI each process writes its own points.
       out.put_tensor_rows("particles/position", p.position);
@@ -19,7 +21,10 @@ namespace fsgmpm
       out.put_rows("particles/mass", p.mass);
       out.put_rows("particles/volume", p.volume);
       out.put_rows("particles/reference_volume", p.reference_volume);
-      out.put_rows("particles/cell", p.cell);
+      std::vector<unsigned int> cell(p.cell.size());
+      for (unsigned int q = 0; q < cell.size(); ++q)
+        cell[q] = grid.global_cell(p.cell[q]);
+      out.put_rows("particles/cell", cell);
       out.put_integer_rows("particles/material_id", p.material_id);
       out.put_integer_rows("particles/body_id", p.body_id);
       out.put_integer_rows("particles/free_surface", p.free_surface);
@@ -274,7 +279,9 @@ namespace fsgmpm
 
 
 #define FSGMPM_INSTANTIATE(dim)                                          \
-  template void save(CheckpointWriter &, const ParticleStore<dim> &);    \
+  template void save(CheckpointWriter &,                                 \
+                     const ParticleStore<dim> &,                         \
+                     const BackgroundGrid<dim> &);                       \
   template void load(const CheckpointReader &,                           \
                      ParticleStore<dim> &,                               \
                      const unsigned int);                                \

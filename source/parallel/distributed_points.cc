@@ -31,10 +31,10 @@ namespace fsgmpm
 
       template <int dim>
       void
-      pack(const BackgroundGrid<dim> &grid,
-           const ParticleStore<dim>  &particles,
-           const unsigned int         p,
-           std::vector<char>         &buffer)
+      pack(const ParticleStore<dim> &particles,
+           const unsigned int        p,
+           const unsigned int        global_cell,
+           std::vector<char>        &buffer)
       {
         Record<dim> r;
         r.position = particles.position[p];
@@ -47,7 +47,7 @@ namespace fsgmpm
         r.reference_volume = particles.reference_volume[p];
         // On the way, a cell goes by its number in the whole grid: the
         // processes may hold windows of it, numbered each their own way.
-        r.cell              = grid.global_cell(particles.cell[p]);
+        r.cell              = global_cell;
         r.id                = particles.id[p];
         r.material_id       = particles.material_id[p];
         r.body_id           = particles.body_id[p];
@@ -161,21 +161,6 @@ namespace fsgmpm
 
     template <int dim>
     void
-    keep_owned(const DomainPartition<dim> &partition,
-               ParticleStore<dim>         &particles)
-    {
-      std::vector<std::uint8_t> flag(particles.size());
-      for (unsigned int p = 0; p < particles.size(); ++p)
-        flag[p] = (partition.owner(particles.cell[p]) != partition.rank());
-      particles.remove_flagged(flag);
-      particles.ghost.clear();
-      particles.sort_by_cell(particles.n_cells());
-    }
-
-
-
-    template <int dim>
-    void
     add_ghosts(const DomainPartition<dim> &partition,
                ParticleStore<dim>         &particles)
     {
@@ -189,7 +174,7 @@ namespace fsgmpm
             for (unsigned int p = particles.cell_begin(c);
                  p < particles.cell_end(c);
                  ++p)
-              pack(partition.get_grid(), particles, p, buffer);
+              pack(particles, p, partition.get_grid().global_cell(c), buffer);
           }
       // Every ghost holder of our cells is a point neighbour.
       const auto received
@@ -272,6 +257,77 @@ namespace fsgmpm
 
 
 
+    namespace
+    {
+      /// migrate() and move_to_owners(): the points' cells are numbers of
+      /// the partition's grid, or of the whole grid if @p whole_numbers.
+      template <int dim>
+      double
+      send_to_owners(const DomainPartition<dim> &partition,
+                     ParticleStore<dim>         &particles,
+                     const double                value,
+                     const bool                  whole_numbers)
+      {
+        const BackgroundGrid<dim> &grid       = partition.get_grid();
+        const auto                &neighbours = partition.point_neighbours();
+        std::map<unsigned int, std::vector<char>> near, far;
+        std::vector<std::uint8_t>                 flag(particles.size(), 0);
+        bool                                      leaving = false;
+        for (unsigned int p = 0; p < particles.size(); ++p)
+          {
+            const unsigned int global_cell
+              = whole_numbers ? particles.cell[p]
+                              : grid.global_cell(particles.cell[p]);
+            const unsigned int q = partition.owners()[global_cell];
+            if (q != partition.rank())
+              {
+                const bool neighbour
+                  = std::binary_search(neighbours.begin(), neighbours.end(), q);
+                pack(particles, p, global_cell, (neighbour ? near : far)[q]);
+                flag[p] = leaving = true;
+              }
+          }
+        // A step moves a point less than its cell's smallest altitude, so
+        // into a cell around its old one (whose owner is a neighbour) but
+        // for slivers; after a repartition or a restart on another number
+        // of processes the new owner may be anyone. Those go the collective
+        // way, when some process has any.
+        const MPI_Comm &comm = partition.get_communicator();
+        auto            received
+          = exchange_with_neighbours(neighbours, near, comm, migration_tag);
+        // The caller's maximum rides in the same all-reduce.
+        const std::vector<double> local = {far.empty() ? 0. : 1., value};
+        std::vector<double>       global(2);
+        Utilities::MPI::max(make_array_view(local),
+                            comm,
+                            make_array_view(global));
+        if (global[0] > 0)
+          for (auto &[rank, buffer] : Utilities::MPI::some_to_some(comm, far))
+            {
+              std::vector<char> &all = received[rank];
+              all.insert(all.end(), buffer.begin(), buffer.end());
+            }
+        if (leaving)
+          particles.remove_flagged(flag);
+        if (whole_numbers)
+          for (unsigned int &c : particles.cell)
+            {
+              const unsigned int g = c;
+              c                    = grid.local_cell(g);
+              AssertThrow(c != BackgroundGrid<dim>::invalid,
+                          ExcMessage("This process owns cell "
+                                     + std::to_string(g)
+                                     + " but does not hold it."));
+            }
+        for (const auto &[rank, buffer] : received)
+          unpack(grid, buffer, 0, particles);
+        particles.sort_by_cell(grid.n_cells());
+        return global[1];
+      }
+    } // namespace
+
+
+
     template <int dim>
     double
     migrate(const DomainPartition<dim> &partition,
@@ -282,50 +338,18 @@ namespace fsgmpm
         return value;
       // After the step: MpmStep::advance cut the ghost copies off.
       Assert(particles.ghost.empty(), ExcInternalError());
-      const auto &neighbours = partition.point_neighbours();
-      std::map<unsigned int, std::vector<char>> near, far;
-      std::vector<std::uint8_t>                 flag(particles.size(), 0);
-      bool                                      leaving = false;
-      for (unsigned int p = 0; p < particles.size(); ++p)
-        {
-          const unsigned int q = partition.owner(particles.cell[p]);
-          if (q != partition.rank())
-            {
-              const bool neighbour
-                = std::binary_search(neighbours.begin(), neighbours.end(), q);
-              pack(partition.get_grid(),
-                   particles,
-                   p,
-                   (neighbour ? near : far)[q]);
-              flag[p] = leaving = true;
-            }
-        }
-      // A step moves a point less than its cell's smallest altitude, so
-      // into a cell around its old one (whose owner is a neighbour) but
-      // for slivers; after a repartition or a restart on another number of
-      // processes the new owner may be anyone. Those go the collective way,
-      // when some process has any.
-      const MPI_Comm &comm = partition.get_communicator();
-      auto            received
-        = exchange_with_neighbours(neighbours, near, comm, migration_tag);
-      // The caller's maximum rides in the same all-reduce.
-      const std::vector<double> local = {far.empty() ? 0. : 1., value};
-      std::vector<double>       global(2);
-      Utilities::MPI::max(make_array_view(local),
-                          comm,
-                          make_array_view(global));
-      if (global[0] > 0)
-        for (auto &[rank, buffer] : Utilities::MPI::some_to_some(comm, far))
-          {
-            std::vector<char> &all = received[rank];
-            all.insert(all.end(), buffer.begin(), buffer.end());
-          }
-      if (leaving)
-        particles.remove_flagged(flag);
-      for (const auto &[rank, buffer] : received)
-        unpack(partition.get_grid(), buffer, 0, particles);
-      particles.sort_by_cell(particles.n_cells());
-      return global[1];
+      return send_to_owners(partition, particles, value, false);
+    }
+
+
+
+    template <int dim>
+    void
+    move_to_owners(const DomainPartition<dim> &partition,
+                   ParticleStore<dim>         &particles)
+    {
+      Assert(particles.ghost.empty(), ExcInternalError());
+      send_to_owners(partition, particles, 0., true);
     }
 
 
@@ -342,16 +366,16 @@ namespace fsgmpm
 
 
 
-#define FSGMPM_INSTANTIATE(dim)                                        \
-  template void         keep_owned<dim>(const DomainPartition<dim> &,  \
-                                ParticleStore<dim> &);         \
-  template void         add_ghosts<dim>(const DomainPartition<dim> &,  \
-                                ParticleStore<dim> &);         \
-  template double       migrate<dim>(const DomainPartition<dim> &,     \
-                               ParticleStore<dim> &,             \
-                               const double);                    \
-  template void         drop_ghosts<dim>(ParticleStore<dim> &);        \
-  template unsigned int global_size<dim>(const DomainPartition<dim> &, \
+#define FSGMPM_INSTANTIATE(dim)                                           \
+  template void         add_ghosts<dim>(const DomainPartition<dim> &,     \
+                                ParticleStore<dim> &);            \
+  template double       migrate<dim>(const DomainPartition<dim> &,        \
+                               ParticleStore<dim> &,                \
+                               const double);                       \
+  template void         drop_ghosts<dim>(ParticleStore<dim> &);           \
+  template void         move_to_owners<dim>(const DomainPartition<dim> &, \
+                                    ParticleStore<dim> &);        \
+  template unsigned int global_size<dim>(const DomainPartition<dim> &,    \
                                          const ParticleStore<dim> &);
     FSGMPM_INSTANTIATE(2)
     FSGMPM_INSTANTIATE(3)

@@ -29,16 +29,32 @@ namespace fsgmpm
   DomainPartition<dim>::partition(
     const std::vector<unsigned int> &points_per_cell)
   {
-    const unsigned int n_cells = grid.n_cells();
-    AssertThrow(points_per_cell.size() == n_cells, ExcInternalError());
     AssertThrow(!grid.is_window(),
-                ExcMessage("METIS splits the whole grid: partition with the "
+                ExcMessage("METIS splits the whole grid: split() with the "
                            "whole grid, then hand the owners to the "
                            "windows' partitions (set_owners)."));
+    set_owners(split(grid, points_per_cell, comm));
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  DomainPartition<dim>::split(const BackgroundGrid<dim>       &grid,
+                              const std::vector<unsigned int> &points_per_cell,
+                              const MPI_Comm                  &comm)
+  {
+    const unsigned int n_cells = grid.n_global_cells();
+    AssertThrow(points_per_cell.size() == n_cells, ExcInternalError());
+    const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
+    std::vector<unsigned int> cell_owner(n_cells, 0);
     if (n_processes > 1)
       {
-        if (this_process == 0)
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
+            AssertThrow(!grid.is_window(),
+                        ExcMessage("METIS splits the whole grid: process 0 "
+                                   "must hold it."));
             // An empty cell still costs a little (its share of the mesh);
             // a point costs its transfers. The copies of a cell in the
             // other velocity fields (multi-field contact) share the base
@@ -81,14 +97,16 @@ namespace fsgmpm
           = MPI_Bcast(cell_owner.data(), n_cells, MPI_UNSIGNED, 0, comm);
         AssertThrowMPI(ierr);
       }
-    set_owners(cell_owner);
+    return cell_owner;
   }
 
 
 
   template <int dim>
   void
-  DomainPartition<dim>::set_owners(const std::vector<unsigned int> &owners)
+  DomainPartition<dim>::check_owners(const BackgroundGrid<dim>       &grid,
+                                     const std::vector<unsigned int> &owners,
+                                     const unsigned int n_processes)
   {
     const unsigned int n_global = grid.n_global_cells();
     bool               fits     = owners.size() == n_global;
@@ -99,6 +117,15 @@ namespace fsgmpm
                 ExcMessage("The cell owners do not fit this mesh and this "
                            "number of processes (or split the copies of a "
                            "cell in the velocity fields)."));
+  }
+
+
+
+  template <int dim>
+  void
+  DomainPartition<dim>::set_owners(const std::vector<unsigned int> &owners)
+  {
+    check_owners(grid, owners, n_processes);
     if (&owners != &cell_owner)
       cell_owner = owners;
 
@@ -277,11 +304,35 @@ namespace fsgmpm
   std::vector<unsigned int>
   DomainPartition<dim>::window_cells(const unsigned int process) const
   {
-    std::vector<unsigned int> cells;
+    return window_cells(grid, cell_owner, process);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  DomainPartition<dim>::window_cells(const BackgroundGrid<dim>       &grid,
+                                     const std::vector<unsigned int> &owners,
+                                     const unsigned int               process)
+  {
     AssertThrow(!grid.is_window(), ExcMessage("Take windows of a whole grid."));
+    // The caller checked the owners (check_owners()).
+    Assert(owners.size() == grid.n_cells(), ExcInternalError());
+    // The nodes of the process's own cells; a cell holds one of them if it
+    // shares a vertex with an own cell (then the process holds it).
+    std::vector<std::uint8_t> own_node(grid.n_base_nodes(), 0);
     for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
-      if (holds(c, process))
-        cells.push_back(c);
+      if (owners[c] == process)
+        for (const unsigned int i : grid.cell_nodes[c])
+          own_node[i] = 1;
+    std::vector<unsigned int> cells;
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      for (const unsigned int i : grid.cell_nodes[c])
+        if (own_node[i] != 0)
+          {
+            cells.push_back(c);
+            break;
+          }
     return cells;
   }
 

@@ -16,12 +16,16 @@
 // cells and their ghost layer, numbered on its own) gives every node of its
 // own cells the whole grid's sums bit for bit, in 2D and 3D; its partition
 // and the points' exchange between windows agree with the whole grid's.
+// And a run (Simulator) holds its window from the first partition on, through
+// repartitions; a scene with a membrane keeps the whole grid.
 
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/parallel/domain_partition.h>
+#include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/simulator.h>
 #include <fsgmpm/step/cell_loops.h>
 
 #include <gtest/gtest.h>
@@ -731,4 +735,89 @@ TEST(GridWindow, OwnNodesGetTheWholeGridsSumsBitForBit2D)
 TEST(GridWindow, OwnNodesGetTheWholeGridsSumsBitForBit3D)
 {
   check_windows<3>(6);
+}
+
+
+
+namespace
+{
+  void
+  set_parameter(ParameterHandler  &prm,
+                const std::string &section,
+                const std::string &name,
+                const std::string &value)
+  {
+    prm.enter_subsection(section);
+    prm.set(name, value);
+    prm.leave_subsection();
+  }
+} // namespace
+
+
+
+// The shipped dam break (60 x 25 squares) repartitioned before every step:
+// after each step every process holds a window of the grid, each of its
+// points is in a cell of the window, and no point is lost or doubled. The
+// results are the serial ones (mpi_reproduces_serial); this test sees that
+// the grid is a window at all.
+TEST(SimulatorWindow, ARunHoldsItsWindowThroughRepartitions)
+{
+  auto prm = test_tools::make_parameters_from_scene("default_dam_break.prm");
+  set_parameter(*prm, "Simulation", "Repartition imbalance", "1");
+  set_parameter(*prm, "Simulation", "Number of threads", "1");
+  set_parameter(*prm, "Output", "Quiet", "true");
+  Simulator<2>       sim(*prm);
+  const MPI_Comm     comm = MPI_COMM_WORLD;
+  const unsigned int n_points
+    = Utilities::MPI::sum(sim.get_particles().size(), comm);
+  for (unsigned int step = 0; step < 20; ++step)
+    {
+      ASSERT_TRUE(sim.advance());
+      const BackgroundGrid<2> &grid = sim.get_grid();
+      ASSERT_TRUE(grid.is_window());
+      EXPECT_EQ(grid.n_global_cells(), 2u * 60 * 25);
+      EXPECT_LT(grid.n_cells(), grid.n_global_cells());
+      for (const unsigned int c : sim.get_particles().cell)
+        ASSERT_LT(c, grid.n_cells());
+      EXPECT_EQ(Utilities::MPI::sum(sim.get_particles().size(), comm),
+                n_points);
+    }
+  // Each repartition cut new windows.
+  EXPECT_GE(sim.get_n_repartitions(), 10u);
+}
+
+
+
+TEST(SimulatorWindow, AMembraneSceneKeepsTheWholeGrid)
+{
+  auto prm = test_tools::make_parameters_from_scene("geotube_A6.45.prm");
+  set_parameter(*prm, "Grid", "Cell size", "0.16");
+  set_parameter(*prm, "Output", "Quiet", "true");
+  Simulator<2> sim(*prm);
+  EXPECT_FALSE(sim.get_grid().is_window());
+}
+
+
+
+// A point that walks out of a window through its edge (not the mesh's
+// boundary) has left the cells its process holds: an error, not a lost
+// point. One that leaves through the mesh's boundary is lost, as in a whole
+// grid.
+TEST(GridWindow, APointBeyondTheWindowIsAnErrorNotALoss)
+{
+  ThreeStrips             s;
+  const BackgroundGrid<2> window = s.grid->window(s.partition->window_cells());
+  const PointLocator<2>   locator(window);
+  // A cell of the process's own strip, its centre 1/3 wide.
+  unsigned int own = BackgroundGrid<2>::invalid;
+  for (unsigned int c = 0; c < window.n_cells(); ++c)
+    if (s.partition->owners()[window.global_cell(c)] == s.rank)
+      own = c;
+  ASSERT_NE(own, BackgroundGrid<2>::invalid);
+  const double x = centre(window, own)[0];
+  // In the farthest strip, past the ghost layer (1/6 wide).
+  const double beyond = s.rank == 0 ? 0.95 : 0.05;
+  EXPECT_THROW(locator.locate(Point<2>(beyond, 0.5), own), ExceptionBase);
+  EXPECT_EQ(locator.locate(Point<2>(x, -0.2), own), BackgroundGrid<2>::invalid);
+  EXPECT_EQ(locator.locate(centre(window, own), own), own);
 }

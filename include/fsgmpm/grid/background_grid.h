@@ -133,6 +133,14 @@ namespace fsgmpm
       return is_window() ? n_whole_cells * n_fields : n_cells();
     }
 
+    /// Nodes of the whole grid (of all velocity fields; n_nodes() in a
+    /// whole grid).
+    unsigned int
+    n_global_nodes() const
+    {
+      return is_window() ? n_whole_nodes * n_fields : n_nodes();
+    }
+
     /// The cell of field 0 of the whole grid over the same triangle as the
     /// whole grid's cell @p g.
     unsigned int

@@ -67,14 +67,17 @@ namespace fsgmpm
     /// owns and @p nodes exact around them (for the points' vorticity and
     /// projected pressure); process 0 writes its @p membrane and the grid
     /// with @p grid_nodes if given (MPI: every node's mass and velocity as
-    /// the process that counts it has them), else with @p nodes.
+    /// the process that counts it has them), else with @p nodes. The grid
+    /// written is @p whole_grid if given (@p grid is then process 0's
+    /// window of it, and @p grid_nodes are numbered in @p whole_grid).
     void
     write(const double               time,
           const ParticleStore<dim>  &particles,
           const BackgroundGrid<dim> &grid,
           const NodalFields<dim>    &nodes,
           const Membrane<dim>       *membrane,
-          const NodalFields<dim>    *grid_nodes = nullptr);
+          const NodalFields<dim>    *grid_nodes = nullptr,
+          const BackgroundGrid<dim> *whole_grid = nullptr);
 
     State
     state() const;

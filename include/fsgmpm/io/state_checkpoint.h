@@ -1,6 +1,7 @@
 #ifndef fsgmpm_io_state_checkpoint_h
 #define fsgmpm_io_state_checkpoint_h
 
+#include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
@@ -15,11 +16,16 @@ namespace fsgmpm
    */
   namespace StateCheckpoint
   {
+    /// The points, each with its cell's number in the whole grid (@p grid
+    /// may be a process's window).
     template <int dim>
     void
-    save(CheckpointWriter &out, const ParticleStore<dim> &particles);
+    save(CheckpointWriter          &out,
+         const ParticleStore<dim>  &particles,
+         const BackgroundGrid<dim> &grid);
 
-    /// Replaces the points; rebuilds the per-cell index (@p n_cells cells).
+    /// Replaces the points; rebuilds the per-cell index (@p n_cells cells,
+    /// those of the whole grid: the points' cells are numbered there).
     template <int dim>
     void
     load(const CheckpointReader &in,

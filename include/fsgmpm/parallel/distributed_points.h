@@ -15,15 +15,6 @@ namespace fsgmpm
   namespace DistributedPoints
   {
     /**
-     * Keep only the points of cells this process owns (after every
-     * process read all points of a checkpoint of an older version).
-     */
-    template <int dim>
-    void
-    keep_owned(const DomainPartition<dim> &partition,
-               ParticleStore<dim>         &particles);
-
-    /**
      * Send copies of this process's points to the processes that hold
      * their cells as ghost cells (point to point, no collective), and
      * receive theirs (flagged in
@@ -62,6 +53,18 @@ namespace fsgmpm
     migrate(const DomainPartition<dim> &partition,
             ParticleStore<dim>         &particles,
             const double                value = 0.);
+
+    /**
+     * migrate() for points whose cells are numbers in the whole grid (as a
+     * checkpoint has them, or as they were before the process's grid
+     * changed to a new window): send them to their owners in @p partition
+     * and number the cells of those kept and received in its grid.
+     * Collective.
+     */
+    template <int dim>
+    void
+    move_to_owners(const DomainPartition<dim> &partition,
+                   ParticleStore<dim>         &particles);
 
     /// The number of points over all processes.
     template <int dim>

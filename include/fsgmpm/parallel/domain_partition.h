@@ -36,13 +36,13 @@ namespace fsgmpm
    * evolve exactly as their originals, and an MPI run repeats the serial
    * run's arithmetic.
    *
-   * A run still keeps the whole background grid on every process
-   * (memory O(mesh) per process, about 90 B per triangle; the points are
-   * distributed). The partition works on a process's window of the grid
-   * too (BackgroundGrid::window(), window_cells()): the owners stay an
-   * array over the whole grid (4 B per cell), the rest comes from the cells
-   * the window holds, and a rim node is asked of one of its owners once
-   * per partition (doc/mpi.md, "Grid windows"; no run uses windows yet).
+   * The partition works on a whole grid or on a process's window of it
+   * (BackgroundGrid::window(), window_cells()): the owners stay an array
+   * over the whole grid (4 B per cell), the rest comes from the cells the
+   * grid holds, and a rim node is asked of one of its owners once per
+   * partition (doc/mpi.md, "Grid windows"). A run without a membrane holds
+   * its window after the first partition; process 0 keeps the whole grid
+   * besides, for METIS and the grid's output.
    * With multi-field contact the copies of a cell in the
    * other velocity fields belong to the base cell's owner; a membrane is
    * held whole by every process (MembraneCoupling).
@@ -61,11 +61,31 @@ namespace fsgmpm
     void
     partition(const std::vector<unsigned int> &points_per_cell);
 
+    /**
+     * The owners partition() would choose, without taking them: METIS on
+     * rank 0's @p grid, which must be whole there (on the other processes
+     * @p grid may be a window: only its size is read); @p points_per_cell
+     * has one entry per cell of the whole grid.
+     */
+    static std::vector<unsigned int>
+    split(const BackgroundGrid<dim>       &grid,
+          const std::vector<unsigned int> &points_per_cell,
+          const MPI_Comm                  &comm);
+
     /// Take @p owners (the owning process of every cell, the same on all
     /// processes) as the partition: a checkpoint's, so that a restarted
     /// run splits the cells as the interrupted one did.
     void
     set_owners(const std::vector<unsigned int> &owners);
+
+    /// Throw, with a message, unless @p owners has a process below
+    /// @p n_processes for every cell of the whole grid of @p grid (a whole
+    /// grid or a window), the same for the copies of a cell in every
+    /// velocity field.
+    static void
+    check_owners(const BackgroundGrid<dim>       &grid,
+                 const std::vector<unsigned int> &owners,
+                 const unsigned int               n_processes);
 
     /// The owning process of every cell of the whole grid.
     const std::vector<unsigned int> &
@@ -157,7 +177,9 @@ namespace fsgmpm
      * Every node's value as the process that counts it has it (exact
      * there), on every process: a sum over the processes in which the
      * others give -0, the exact neutral element of IEEE addition. For
-     * output of nodal fields; @p T is double or a Tensor of doubles.
+     * output of nodal fields; @p T is double or a Tensor of doubles. On a
+     * window the result has an entry for every node of the whole grid, by
+     * its number there.
      */
     template <typename T>
     std::vector<T>
@@ -184,6 +206,14 @@ namespace fsgmpm
     /// ghost holders are all known there).
     std::vector<unsigned int>
     window_cells(const unsigned int process) const;
+
+    /// window_cells() of process @p process for the owners @p owners of
+    /// the cells of the whole grid @p grid, without a partition (no
+    /// collective: process 0 cuts every process's window).
+    static std::vector<unsigned int>
+    window_cells(const BackgroundGrid<dim>       &grid,
+                 const std::vector<unsigned int> &owners,
+                 const unsigned int               process);
 
   private:
     MPI_Comm                   comm;
@@ -227,9 +257,25 @@ namespace fsgmpm
   std::vector<T>
   DomainPartition<dim>::counted_values(const std::vector<T> &values) const
   {
-    std::vector<T> result = values;
+    if (!grid.is_window())
+      {
+        std::vector<T> result = values;
+        Parallel::take_values_of_owners(
+          result,
+          [this](const unsigned int i) { return counted[i] != 0; },
+          comm);
+        return result;
+      }
+    std::vector<T>            result(grid.n_global_nodes());
+    std::vector<std::uint8_t> mine(result.size(), 0);
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (counted[i] != 0)
+        {
+          result[grid.global_node(i)] = values[i];
+          mine[grid.global_node(i)]   = 1;
+        }
     Parallel::take_values_of_owners(
-      result, [this](const unsigned int i) { return counted[i] != 0; }, comm);
+      result, [&mine](const unsigned int g) { return mine[g] != 0; }, comm);
     return result;
   }
 

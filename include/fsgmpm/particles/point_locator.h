@@ -3,6 +3,11 @@
 
 #include <fsgmpm/grid/background_grid.h>
 
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <utility>
+
 namespace fsgmpm
 {
   /**
@@ -50,7 +55,10 @@ namespace fsgmpm
             return c;
           const unsigned int next = grid.cell_neighbors[c][kmin];
           if (next == BackgroundGrid<dim>::invalid)
-            break;
+            {
+              check_not_beyond_window(x, c, kmin);
+              break;
+            }
           c = next;
         }
       // The walk stays in the guess's velocity field; so does the search.
@@ -65,6 +73,44 @@ namespace fsgmpm
   private:
     const BackgroundGrid<dim> &grid;
     const double               tolerance;
+
+    /// MPI: in a process's window of the grid a face without a neighbour
+    /// is either the mesh's boundary or the edge of the window. A point
+    /// that walks out through the edge has left the cells the process
+    /// holds (a step moves a point less than its cell's smallest altitude,
+    /// so this takes a sliver cell beside it): the whole grid would find
+    /// it, the window cannot. Stop rather than count it as lost.
+    void
+    check_not_beyond_window(const Point<dim>  &x,
+                            const unsigned int c,
+                            const unsigned int face) const
+    {
+      if (!grid.is_window())
+        return;
+      // boundary_faces are sorted by cell, then face.
+      const auto key = std::make_pair(c % grid.n_base_cells(), face);
+      const auto it
+        = std::lower_bound(grid.boundary_faces.begin(),
+                           grid.boundary_faces.end(),
+                           key,
+                           [](const auto                                  &f,
+                              const std::pair<unsigned int, unsigned int> &k) {
+                             return std::make_pair(f.cell, f.vertex) < k;
+                           });
+      if (it != grid.boundary_faces.end() && it->cell == key.first
+          && it->vertex == face)
+        return;
+      std::ostringstream where;
+      where << x;
+      AssertThrow(false,
+                  ExcMessage("A point at (" + where.str()
+                             + ") moved beyond its MPI process's ghost layer "
+                               "of the grid in one step (from cell "
+                             + std::to_string(grid.global_cell(c))
+                             + " of the mesh). Lower Simulation/Courant "
+                               "number, or mend the sliver cells of the "
+                               "mesh there."));
+    }
   };
 } // namespace fsgmpm
 
