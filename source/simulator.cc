@@ -97,6 +97,21 @@ namespace fsgmpm
 
 
 
+  namespace
+  {
+    /// Make @p values on every process of @p comm those of process 0.
+    void
+    broadcast_values(std::vector<unsigned int> &values, const MPI_Comm &comm)
+    {
+      const auto n = Utilities::MPI::broadcast(comm, values.size(), 0);
+      values.resize(n);
+      const int ierr = MPI_Bcast(values.data(), n, MPI_UNSIGNED, 0, comm);
+      AssertThrowMPI(ierr);
+    }
+  } // namespace
+
+
+
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler &prm)
     : params(prm)
@@ -113,12 +128,19 @@ namespace fsgmpm
 
     bodies = BodyDescription<dim>::parse_bodies(prm);
 
-    // MPI: process 0 builds the grid from the mesh and sends it to the
-    // others, which never hold the mesh (its creation is the peak of a
-    // process's memory). An error there stops every process (main()).
+    // MPI: process 0 builds the grid from the mesh, which no other
+    // process ever holds (its creation is the peak of a process's memory).
+    // A scene without a membrane runs on windows of the grid: process 0
+    // alone holds the whole grid and sends each process its window once
+    // the cells are split (setup_bodies()). A membrane reaches over the
+    // whole grid: then process 0 sends the whole grid to every process. An
+    // error on process 0 stops every process (main()).
     const bool several = Parallel::n_processes(MPI_COMM_WORLD) > 1;
     root = !several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    if (!several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    prm.enter_subsection("Membrane");
+    windows = several && !prm.get_bool("Enabled");
+    prm.leave_subsection();
+    if (root)
       {
         Triangulation<dim> triangulation;
         if (params.grid_type == "box")
@@ -151,44 +173,56 @@ namespace fsgmpm
       }
     else
       grid = std::make_unique<BackgroundGrid<dim>>();
-    if (several)
+    if (several && !windows)
       grid->broadcast(MPI_COMM_WORLD);
-    unsigned int n_fields = 1;
-    for (const auto &body : bodies)
-      n_fields = std::max(n_fields, body.velocity_field + 1);
-    if (n_fields > 1)
-      grid->set_velocity_fields(n_fields);
-    // The nodal volumes: read only by the contact and APIC's affine remap.
-    if (n_fields > 1 || params.apic_affine_remap)
-      grid->compute_node_volumes();
+    // What follows needs the whole grid: with windows, process 0 does it
+    // (a window gets the velocity fields and nodal volumes from it).
+    if (root || !windows)
+      {
+        unsigned int n_fields = 1;
+        for (const auto &body : bodies)
+          n_fields = std::max(n_fields, body.velocity_field + 1);
+        if (n_fields > 1)
+          grid->set_velocity_fields(n_fields);
+        // The nodal volumes: read only by the contact and APIC's affine
+        // remap.
+        if (n_fields > 1 || params.apic_affine_remap)
+          grid->compute_node_volumes();
 
-    // Every boundary id named in the wall conditions must exist.
-    std::set<types::boundary_id> mesh_ids;
-    for (const auto &face : grid->boundary_faces)
-      mesh_ids.insert(face.boundary_id);
-    for (const auto &[id, wall] : params.walls)
-      AssertThrow(mesh_ids.count(id) == 1,
-                  ExcMessage("Grid/Boundary conditions names boundary id "
-                             + std::to_string(id)
-                             + ", but the mesh has no boundary face with that "
-                               "id."));
+        // Every boundary id named in the wall conditions must exist.
+        std::set<types::boundary_id> mesh_ids;
+        for (const auto &face : grid->boundary_faces)
+          mesh_ids.insert(face.boundary_id);
+        for (const auto &[id, wall] : params.walls)
+          AssertThrow(mesh_ids.count(id) == 1,
+                      ExcMessage("Grid/Boundary conditions names boundary id "
+                                 + std::to_string(id)
+                                 + ", but the mesh has no boundary face with "
+                                   "that id."));
 
-    constraints = std::make_unique<NodalConstraints<dim>>(*grid,
-                                                          params.walls,
-                                                          params.moving_wall);
+        constraints
+          = std::make_unique<NodalConstraints<dim>>(*grid,
+                                                    params.walls,
+                                                    params.moving_wall);
+      }
     nodes.resize(grid->n_nodes());
 
-    Point<dim> cell_size;
-    for (unsigned int d = 0; d < dim; ++d)
-      cell_size[d] = (params.grid_type != "gmsh")
-                       ? (params.upper_corner[d] - params.lower_corner[d])
-                           / params.subdivisions[std::min<unsigned int>(
-                             d, params.subdivisions.size() - 1)]
-                       : grid->max_altitude_global;
-    setup_membrane(prm, cell_size);
+    const auto cell_size = [this]() {
+      Point<dim> h;
+      for (unsigned int d = 0; d < dim; ++d)
+        h[d] = (params.grid_type != "gmsh")
+                 ? (params.upper_corner[d] - params.lower_corner[d])
+                     / params.subdivisions[std::min<unsigned int>(
+                       d, params.subdivisions.size() - 1)]
+                 : grid->max_altitude_global;
+      return h;
+    };
+    // (With windows there is no membrane, and a process's grid is empty
+    // until setup_bodies() gives it its window.)
+    setup_membrane(prm, windows ? Point<dim>() : cell_size());
     setup_bodies();
     scene_monitors = std::make_unique<SceneMonitors<dim>>(
-      prm, grid->lower_corner, cell_size, bodies.size(), membrane != nullptr);
+      prm, grid->lower_corner, cell_size(), bodies.size(), membrane != nullptr);
     setup_partition();
     smoothing.resize(materials.size(), grid->n_nodes());
     mpm_step = std::make_unique<MpmStep<dim>>(*grid,
@@ -465,30 +499,55 @@ namespace fsgmpm
     // points; the partition weighs the counts and a process stores the
     // points of its own cells, each with the id, and so the place, it has
     // in a serial run.
-    std::vector<unsigned int> points_per_cell(grid->n_cells(), 0);
-    {
-      const std::vector<std::uint8_t> store_none(grid->n_base_cells(), 0);
-      fill_bodies(&store_none, &points_per_cell);
-    }
+    // With windows, process 0 alone counts (it alone holds the whole
+    // grid) and hands every process the ids of its cells' points.
+    std::vector<unsigned int> points_per_cell, first_ids;
+    if (root || !windows)
+      {
+        points_per_cell.assign(grid->n_cells(), 0);
+        const std::vector<std::uint8_t> store_none(grid->n_base_cells(), 0);
+        fill_bodies(&store_none,
+                    &points_per_cell,
+                    windows ? &first_ids : nullptr);
+      }
+    const unsigned int        n_points = particles.next_id;
     std::vector<std::uint8_t> mine; // empty: keep every point (serial)
     std::vector<unsigned int> owners;
+    unsigned int              n_kept = 0;
     if (Parallel::n_processes(MPI_COMM_WORLD) > 1)
       {
-        owners
-          = DomainPartition<dim>::split(*grid, points_per_cell, MPI_COMM_WORLD);
-        const unsigned int rank
-          = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+        const MPI_Comm comm = MPI_COMM_WORLD;
+        owners = DomainPartition<dim>::split(*grid, points_per_cell, comm);
+        const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+        partition = std::make_unique<DomainPartition<dim>>(comm, *grid);
+        if (windows)
+          {
+            // The points each process keeps, for the exact room.
+            std::vector<unsigned int> kept(partition->n_ranks(), 0);
+            for (unsigned int c = 0; c < points_per_cell.size(); ++c)
+              kept[owners[c]] += points_per_cell[c];
+            const int ierr = MPI_Scatter(
+              kept.data(), 1, MPI_UNSIGNED, &n_kept, 1, MPI_UNSIGNED, 0, comm);
+            AssertThrowMPI(ierr);
+            broadcast_values(first_ids, comm);
+            adopt_owners(owners);
+          }
         mine.resize(grid->n_base_cells());
         for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
-          mine[c] = owners[c] == rank;
+          mine[c] = owners[grid->global_cell(c)] == rank;
       }
-    unsigned int n_kept = 0;
-    for (unsigned int c = 0; c < grid->n_cells(); ++c)
-      if (mine.empty() || mine[c % grid->n_base_cells()])
-        n_kept += points_per_cell[c];
+    if (!windows)
+      for (unsigned int c = 0; c < grid->n_cells(); ++c)
+        if (mine.empty() || mine[c % grid->n_base_cells()])
+          n_kept += points_per_cell[c];
     particles = ParticleStore<dim>();
     particles.reserve(n_kept);
-    fill_bodies(mine.empty() ? nullptr : &mine, nullptr);
+    fill_bodies(mine.empty() ? nullptr : &mine,
+                nullptr,
+                windows ? &first_ids : nullptr);
+    // On a window the fill ends at the last cell it holds: the next point
+    // added (none yet) gets the id after the serial fill's last.
+    particles.next_id = Utilities::MPI::max(n_points, MPI_COMM_WORLD);
     for (auto &body : bodies)
       {
         material_options.push_back(body.options);
@@ -497,12 +556,8 @@ namespace fsgmpm
     if (params.use_apic)
       particles.enable_affine_velocity();
     particles.sort_by_cell(grid->n_cells());
-    if (!owners.empty())
-      {
-        partition
-          = std::make_unique<DomainPartition<dim>>(MPI_COMM_WORLD, *grid);
-        adopt_owners(owners);
-      }
+    if (partition && !windows)
+      adopt_owners(owners);
   }
 
 
@@ -513,8 +568,11 @@ namespace fsgmpm
   {
     const MPI_Comm comm = partition->get_communicator();
     // Every process checks the owners before any of them waits for a
-    // window, so that bad ones (a checkpoint's) stop all alike.
-    DomainPartition<dim>::check_owners(*grid, owners, partition->n_ranks());
+    // window, so that bad ones (a checkpoint's) stop all alike. (At the
+    // start a process other than 0 has no grid yet, and the owners are
+    // METIS's.)
+    if (grid->n_cells() > 0)
+      DomainPartition<dim>::check_owners(*grid, owners, partition->n_ranks());
     if (!membrane)
       {
         if (root && !whole_grid)
@@ -532,8 +590,15 @@ namespace fsgmpm
           }
         else
           *grid = BackgroundGrid<dim>::receive_window(0, comm);
-        *constraints
-          = NodalConstraints<dim>(*grid, params.walls, params.moving_wall);
+        // In place too (the step refers to it); none yet at the start.
+        NodalConstraints<dim> window_constraints(*grid,
+                                                 params.walls,
+                                                 params.moving_wall);
+        if (constraints)
+          *constraints = std::move(window_constraints);
+        else
+          constraints = std::make_unique<NodalConstraints<dim>>(
+            std::move(window_constraints));
         constraints->set_time(time);
         nodes.resize(grid->n_nodes());
         smoothing.resize(materials.size(), grid->n_nodes());
@@ -550,7 +615,8 @@ namespace fsgmpm
   template <int dim>
   void
   Simulator<dim>::fill_bodies(const std::vector<std::uint8_t> *keep_cell,
-                              std::vector<unsigned int>       *points_per_cell)
+                              std::vector<unsigned int>       *points_per_cell,
+                              std::vector<unsigned int>       *first_ids)
   {
     // Bodies fill in order: a body leaves out the regions of those before
     // it, so a water tank listed after a bag surrounds it without a second
@@ -559,10 +625,23 @@ namespace fsgmpm
     std::vector<unsigned int>           per_base_cell;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        BodyDescription<dim> &body  = bodies[b];
-        const unsigned int    first = particles.size();
+        BodyDescription<dim> &body     = bodies[b];
+        const unsigned int    first    = particles.size();
+        const unsigned int    first_id = particles.next_id;
         if (points_per_cell)
           per_base_cell.assign(grid->n_base_cells(), 0);
+        // A window's cells: the ids of their first points in the whole
+        // grid's fill.
+        std::vector<unsigned int> cell_first_id;
+        if (first_ids && !points_per_cell)
+          {
+            const unsigned int n_whole
+              = grid->n_global_cells() / grid->n_velocity_fields();
+            cell_first_id.resize(grid->n_base_cells());
+            for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
+              cell_first_id[c]
+                = (*first_ids)[b * n_whole + grid->global_cell(c)];
+          }
         fill_body(*grid,
                   *body.shape,
                   body.particles_per_cell,
@@ -573,11 +652,22 @@ namespace fsgmpm
                   particles,
                   taken,
                   keep_cell,
-                  points_per_cell ? &per_base_cell : nullptr);
+                  points_per_cell ? &per_base_cell : nullptr,
+                  cell_first_id.empty() ? nullptr : &cell_first_id);
         if (points_per_cell)
           for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
             (*points_per_cell)[grid->cell_in_field(c, body.velocity_field)]
               += per_base_cell[c];
+        if (points_per_cell && first_ids)
+          {
+            // Ids run body by body, cell by cell (fill_body()).
+            unsigned int id = first_id;
+            for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
+              {
+                first_ids->push_back(id);
+                id += per_base_cell[c];
+              }
+          }
         for (unsigned int p = first; p < particles.size(); ++p)
           particles.cell[p]
             = grid->cell_in_field(particles.cell[p], body.velocity_field);

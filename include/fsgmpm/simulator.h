@@ -236,9 +236,13 @@ namespace fsgmpm
     /// Fill every body in order (fill_body(): @p keep_cell, one flag per
     /// base cell, and @p points_per_cell, per cell of every velocity field),
     /// with their initial stresses.
+    /// @p first_ids (one per body and base cell of the whole grid, body by
+    /// body): with @p points_per_cell, the id of the first point of each
+    /// body in each cell, computed; without, a window's fill takes them.
     void
     fill_bodies(const std::vector<std::uint8_t> *keep_cell,
-                std::vector<unsigned int>       *points_per_cell);
+                std::vector<unsigned int>       *points_per_cell,
+                std::vector<unsigned int>       *first_ids = nullptr);
     /// The energies of monitors.csv (at the start of a run).
     void
     compute_monitors();
@@ -338,6 +342,9 @@ namespace fsgmpm
     /// serial). Rank 0 writes the files.
     std::unique_ptr<DomainPartition<dim>> partition;
     bool                                  root = true;
+    /// MPI, a scene without a membrane: each process holds its window of
+    /// the grid, process 0 the whole grid besides (adopt_owners()).
+    bool windows = false;
     /// MPI statistics for summary.json: repartitions so far, the ghost
     /// points of the last step (this process's ratio to its owned points;
     /// write_summary() takes the largest) and the last max/mean points per

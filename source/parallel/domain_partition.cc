@@ -44,8 +44,9 @@ namespace fsgmpm
                               const std::vector<unsigned int> &points_per_cell,
                               const MPI_Comm                  &comm)
   {
-    const unsigned int n_cells = grid.n_global_cells();
-    AssertThrow(points_per_cell.size() == n_cells, ExcInternalError());
+    // Process 0's grid tells the size (another's may be empty yet).
+    const unsigned int n_cells
+      = Utilities::MPI::broadcast(comm, grid.n_global_cells(), 0);
     const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
     std::vector<unsigned int> cell_owner(n_cells, 0);
     if (n_processes > 1)
@@ -55,6 +56,7 @@ namespace fsgmpm
             AssertThrow(!grid.is_window(),
                         ExcMessage("METIS splits the whole grid: process 0 "
                                    "must hold it."));
+            AssertThrow(points_per_cell.size() == n_cells, ExcInternalError());
             // An empty cell still costs a little (its share of the mesh);
             // a point costs its transfers. The copies of a cell in the
             // other velocity fields (multi-field contact) share the base

@@ -109,38 +109,45 @@ namespace fsgmpm
             ParticleStore<dim>                        &particles,
             const std::vector<const BodyShape<dim> *> &taken,
             const std::vector<std::uint8_t>           *keep_cell,
-            std::vector<unsigned int>                 *points_per_base_cell)
+            std::vector<unsigned int>                 *points_per_base_cell,
+            const std::vector<unsigned int>           *first_id)
   {
     Assert(!keep_cell || keep_cell->size() == grid.n_base_cells(),
            ExcInternalError());
     Assert(!points_per_base_cell
              || points_per_base_cell->size() == grid.n_base_cells(),
            ExcInternalError());
+    AssertThrow(!grid.is_window()
+                  || (first_id && first_id->size() == grid.n_base_cells()),
+                ExcInternalError());
     const std::string body_name
       = "Body " + std::to_string(body_id) + " (" + shape.description()
         + (shape.parameters.empty() ? "" : ", from " + shape.parameters);
     for (const Point<dim> &p : shape.outline_points())
-      {
-        // Allow round-off on the mesh boundary.
-        const double tol = 1e-9;
-        AssertThrow(grid.find_cell_brute_force(p, tol)
-                      != BackgroundGrid<dim>::invalid,
-                    ExcMessage(body_name
-                               + ") reaches outside the background mesh, e.g. "
-                                 "at the point ("
-                               +
-                               [&] {
-                                 std::ostringstream s;
-                                 s << p;
-                                 return s.str();
-                               }()
-                               + "). Move the body or enlarge the grid."));
-      }
+      if (!grid.is_window())
+        {
+          // Allow round-off on the mesh boundary.
+          const double tol = 1e-9;
+          AssertThrow(
+            grid.find_cell_brute_force(p, tol) != BackgroundGrid<dim>::invalid,
+            ExcMessage(body_name
+                       + ") reaches outside the background mesh, e.g. "
+                         "at the point ("
+                       +
+                       [&] {
+                         std::ostringstream s;
+                         s << p;
+                         return s.str();
+                       }()
+                       + "). Move the body or enlarge the grid."));
+        }
 
     const auto   ref   = reference_particle_points<dim>(particles_per_cell);
     unsigned int added = 0, overlapped = 0;
     for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
       {
+        if (first_id)
+          particles.next_id = (*first_id)[c];
         const double v = grid.cell_volume(c) / ref.size();
         for (const auto &lambda : ref)
           {
@@ -170,7 +177,7 @@ namespace fsgmpm
             ++added;
           }
       }
-    AssertThrow(added > 0,
+    AssertThrow(added > 0 || grid.is_window(),
                 ExcMessage(
                   body_name
                   + (overlapped > 0
@@ -229,7 +236,8 @@ namespace fsgmpm
                ParticleStore<2> &,
                const std::vector<const BodyShape<2> *> &,
                const std::vector<std::uint8_t> *,
-               std::vector<unsigned int> *);
+               std::vector<unsigned int> *,
+               const std::vector<unsigned int> *);
   template double
   surface_height_above<2>(const BodyShape<2> &,
                           const Point<2> &,
@@ -253,5 +261,6 @@ namespace fsgmpm
                ParticleStore<3> &,
                const std::vector<const BodyShape<3> *> &,
                const std::vector<std::uint8_t> *,
-               std::vector<unsigned int> *);
+               std::vector<unsigned int> *,
+               const std::vector<unsigned int> *);
 } // namespace fsgmpm

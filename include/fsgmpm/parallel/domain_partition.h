@@ -64,8 +64,9 @@ namespace fsgmpm
     /**
      * The owners partition() would choose, without taking them: METIS on
      * rank 0's @p grid, which must be whole there (on the other processes
-     * @p grid may be a window: only its size is read); @p points_per_cell
-     * has one entry per cell of the whole grid.
+     * @p grid may be a window or empty: it is not read); @p points_per_cell
+     * has one entry per cell of the whole grid on rank 0 (is not read
+     * elsewhere).
      */
     static std::vector<unsigned int>
     split(const BackgroundGrid<dim>       &grid,

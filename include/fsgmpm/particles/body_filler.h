@@ -36,6 +36,12 @@ namespace fsgmpm
    * that every point has the id of a serial run's fill. With
    * @p points_per_base_cell the body's points of each base cell are added
    * to it, stored or not.
+   *
+   * On a process's window of the grid (BackgroundGrid::window()) the
+   * cells before a cell may be missing, so @p first_id gives the id of
+   * the body's first point in each base cell (as the whole grid's fill
+   * numbers them), and the checks on the whole body (inside the mesh, not
+   * empty) are left to the process that fills the whole grid.
    */
   template <int dim>
   unsigned int
@@ -47,9 +53,10 @@ namespace fsgmpm
             const std::uint16_t                        material_id,
             const std::uint16_t                        body_id,
             ParticleStore<dim>                        &particles,
-            const std::vector<const BodyShape<dim> *> &taken     = {},
-            const std::vector<std::uint8_t>           *keep_cell = nullptr,
-            std::vector<unsigned int> *points_per_base_cell      = nullptr);
+            const std::vector<const BodyShape<dim> *> &taken      = {},
+            const std::vector<std::uint8_t>           *keep_cell  = nullptr,
+            std::vector<unsigned int>       *points_per_base_cell = nullptr,
+            const std::vector<unsigned int> *first_id             = nullptr);
 
   /**
    * Height of the surface of @p shape above the inside point @p x: the
