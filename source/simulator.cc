@@ -318,14 +318,21 @@ namespace fsgmpm
         || imbalance <= params.repartition_imbalance)
       return;
     // The points of every cell of the whole grid, for METIS on process 0.
-    std::vector<unsigned int> local(grid->n_global_cells(), 0),
-      points_per_cell(grid->n_global_cells(), 0);
+    const unsigned int        n_cells = grid->n_global_cells();
+    std::vector<unsigned int> local(n_cells, 0),
+      points_per_cell(root ? n_cells : 0);
     for (const unsigned int c : particles.occupied_cells)
       local[grid->global_cell(c)]
         = particles.cell_end(c) - particles.cell_begin(c);
-    Utilities::MPI::sum(make_array_view(std::as_const(local)),
-                        comm,
-                        make_array_view(points_per_cell));
+    const int ierr = MPI_Reduce(local.data(),
+                                points_per_cell.data(),
+                                n_cells,
+                                MPI_UNSIGNED,
+                                MPI_SUM,
+                                0,
+                                comm);
+    AssertThrowMPI(ierr);
+    local = std::vector<unsigned int>();
     const std::vector<unsigned int> owners
       = DomainPartition<dim>::split(whole_grid ? *whole_grid : *grid,
                                     points_per_cell,
@@ -498,9 +505,9 @@ namespace fsgmpm
     // B of 329 B per point in the 2D dam break). MPI: no process holds all
     // points; the partition weighs the counts and a process stores the
     // points of its own cells, each with the id, and so the place, it has
-    // in a serial run.
-    // With windows, process 0 alone counts (it alone holds the whole
-    // grid) and hands every process the ids of its cells' points.
+    // in a serial run. With windows, process 0 alone counts (it alone
+    // holds the whole grid), and hands every process its window and the
+    // ids of the first points of each body in each cell.
     std::vector<unsigned int> points_per_cell, first_ids;
     if (root || !windows)
       {
@@ -573,7 +580,7 @@ namespace fsgmpm
     // METIS's.)
     if (grid->n_cells() > 0)
       DomainPartition<dim>::check_owners(*grid, owners, partition->n_ranks());
-    if (!membrane)
+    if (windows)
       {
         if (root && !whole_grid)
           whole_grid = std::make_unique<BackgroundGrid<dim>>(std::move(*grid));

@@ -180,7 +180,8 @@ namespace fsgmpm
      * others give -0, the exact neutral element of IEEE addition. For
      * output of nodal fields; @p T is double or a Tensor of doubles. On a
      * window the result has an entry for every node of the whole grid, by
-     * its number there.
+     * its number there, and only process 0 (which writes the grid) gets
+     * it: the others get an empty vector.
      */
     template <typename T>
     std::vector<T>
@@ -267,16 +268,54 @@ namespace fsgmpm
           comm);
         return result;
       }
-    std::vector<T>            result(grid.n_global_nodes());
-    std::vector<std::uint8_t> mine(result.size(), 0);
+    // A window: each process sends process 0 the whole-grid numbers and
+    // values of the nodes it counts (each node is counted once).
+    std::vector<unsigned int> index;
+    std::vector<T>            own_values;
     for (unsigned int i = 0; i < values.size(); ++i)
       if (counted[i] != 0)
         {
-          result[grid.global_node(i)] = values[i];
-          mine[grid.global_node(i)]   = 1;
+          index.push_back(grid.global_node(i));
+          own_values.push_back(values[i]);
         }
-    Parallel::take_values_of_owners(
-      result, [&mine](const unsigned int g) { return mine[g] != 0; }, comm);
+    const int        n = index.size();
+    std::vector<int> n_of(this_process == 0 ? n_processes : 0);
+    int ierr = MPI_Gather(&n, 1, MPI_INT, n_of.data(), 1, MPI_INT, 0, comm);
+    AssertThrowMPI(ierr);
+    std::vector<int> start(n_of.size() + 1, 0), byte_count, byte_start;
+    for (unsigned int q = 0; q < n_of.size(); ++q)
+      {
+        start[q + 1] = start[q] + n_of[q];
+        byte_count.push_back(n_of[q] * sizeof(T));
+        byte_start.push_back(start[q] * sizeof(T));
+      }
+    std::vector<unsigned int> all_index(start.back());
+    std::vector<T>            all_values(start.back());
+    ierr = MPI_Gatherv(index.data(),
+                       n,
+                       MPI_UNSIGNED,
+                       all_index.data(),
+                       n_of.data(),
+                       start.data(),
+                       MPI_UNSIGNED,
+                       0,
+                       comm);
+    AssertThrowMPI(ierr);
+    ierr = MPI_Gatherv(own_values.data(),
+                       n * sizeof(T),
+                       MPI_BYTE,
+                       all_values.data(),
+                       byte_count.data(),
+                       byte_start.data(),
+                       MPI_BYTE,
+                       0,
+                       comm);
+    AssertThrowMPI(ierr);
+    if (this_process != 0)
+      return {};
+    std::vector<T> result(grid.n_global_nodes());
+    for (unsigned int k = 0; k < all_index.size(); ++k)
+      result[all_index[k]] = all_values[k];
     return result;
   }
 
