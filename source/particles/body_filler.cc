@@ -123,8 +123,10 @@ namespace fsgmpm
     const std::string body_name
       = "Body " + std::to_string(body_id) + " (" + shape.description()
         + (shape.parameters.empty() ? "" : ", from " + shape.parameters);
-    for (const Point<dim> &p : shape.outline_points())
-      if (!grid.is_window())
+    // (A window is part of the mesh: the process that fills the whole
+    // grid checks the whole body.)
+    if (!grid.is_window())
+      for (const Point<dim> &p : shape.outline_points())
         {
           // Allow round-off on the mesh boundary.
           const double tol = 1e-9;
