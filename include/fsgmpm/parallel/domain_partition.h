@@ -65,8 +65,8 @@ namespace fsgmpm
      * The owners partition() would choose, without taking them: METIS on
      * rank 0's @p grid, which must be whole there (on the other processes
      * @p grid may be a window or empty: it is not read); @p points_per_cell
-     * has one entry per cell of the whole grid on rank 0 (is not read
-     * elsewhere).
+     * has one entry per cell of the whole grid on rank 0 and is not read
+     * elsewhere.
      */
     static std::vector<unsigned int>
     split(const BackgroundGrid<dim>       &grid,
@@ -204,8 +204,7 @@ namespace fsgmpm
     std::vector<unsigned int>
     window_cells() const;
 
-    /// window_cells() of process @p process (of a whole grid: each cell's
-    /// ghost holders are all known there).
+    /// window_cells() of process @p process (of a whole grid).
     std::vector<unsigned int>
     window_cells(const unsigned int process) const;
 
