@@ -7,6 +7,7 @@
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
+#include <fsgmpm/parallel/broadcast_vector.h>
 #include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/parallel/process_count.h>
 #include <fsgmpm/particles/body_filler.h>
@@ -94,21 +95,6 @@ namespace fsgmpm
         seconds[s] += restored_stage_seconds[s];
     return seconds;
   }
-
-
-
-  namespace
-  {
-    /// Make @p values on every process of @p comm those of process 0.
-    void
-    broadcast_values(std::vector<unsigned int> &values, const MPI_Comm &comm)
-    {
-      const auto n = Utilities::MPI::broadcast(comm, values.size(), 0);
-      values.resize(n);
-      const int ierr = MPI_Bcast(values.data(), n, MPI_UNSIGNED, 0, comm);
-      AssertThrowMPI(ierr);
-    }
-  } // namespace
 
 
 
@@ -526,17 +512,17 @@ namespace fsgmpm
         const MPI_Comm comm = MPI_COMM_WORLD;
         owners = DomainPartition<dim>::split(*grid, points_per_cell, comm);
         const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-        partition = std::make_unique<DomainPartition<dim>>(comm, *grid);
         if (windows)
           {
             // The points each process keeps, for the exact room.
-            std::vector<unsigned int> kept(partition->n_ranks(), 0);
+            std::vector<unsigned int> kept(
+              Utilities::MPI::n_mpi_processes(comm), 0);
             for (unsigned int c = 0; c < points_per_cell.size(); ++c)
               kept[owners[c]] += points_per_cell[c];
             const int ierr = MPI_Scatter(
               kept.data(), 1, MPI_UNSIGNED, &n_kept, 1, MPI_UNSIGNED, 0, comm);
             AssertThrowMPI(ierr);
-            broadcast_values(first_ids, comm);
+            Parallel::broadcast_vector(first_ids, comm, 0);
             adopt_owners(owners);
           }
         mine.resize(grid->n_base_cells());
@@ -554,7 +540,8 @@ namespace fsgmpm
                 windows ? &first_ids : nullptr);
     // On a window the fill ends at the last cell it holds: the next point
     // added (none yet) gets the id after the serial fill's last.
-    particles.next_id = Utilities::MPI::max(n_points, MPI_COMM_WORLD);
+    if (!owners.empty())
+      particles.next_id = Utilities::MPI::max(n_points, MPI_COMM_WORLD);
     for (auto &body : bodies)
       {
         material_options.push_back(body.options);
@@ -563,7 +550,7 @@ namespace fsgmpm
     if (params.use_apic)
       particles.enable_affine_velocity();
     particles.sort_by_cell(grid->n_cells());
-    if (partition && !windows)
+    if (!owners.empty() && !windows)
       adopt_owners(owners);
   }
 
@@ -573,13 +560,14 @@ namespace fsgmpm
   void
   Simulator<dim>::adopt_owners(const std::vector<unsigned int> &owners)
   {
-    const MPI_Comm comm = partition->get_communicator();
+    const MPI_Comm     comm    = MPI_COMM_WORLD;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     // Every process checks the owners before any of them waits for a
     // window, so that bad ones (a checkpoint's) stop all alike. (At the
     // start a process other than 0 has no grid yet, and the owners are
     // METIS's.)
     if (grid->n_cells() > 0)
-      DomainPartition<dim>::check_owners(*grid, owners, partition->n_ranks());
+      DomainPartition<dim>::check_owners(*grid, owners, n_ranks);
     if (windows)
       {
         if (root && !whole_grid)
@@ -587,7 +575,7 @@ namespace fsgmpm
         // In place: the step and the constraints refer to *grid.
         if (root)
           {
-            for (unsigned int q = 1; q < partition->n_ranks(); ++q)
+            for (unsigned int q = 1; q < n_ranks; ++q)
               whole_grid->send_window(
                 DomainPartition<dim>::window_cells(*whole_grid, owners, q),
                 q,
