@@ -116,16 +116,13 @@ namespace fsgmpm
 
     // MPI: process 0 builds the grid from the mesh, which no other
     // process ever holds (its creation is the peak of a process's memory).
-    // A scene without a membrane runs on windows of the grid: process 0
-    // alone holds the whole grid and sends each process its window once
-    // the cells are split (setup_bodies()). A membrane reaches over the
-    // whole grid: then process 0 sends the whole grid to every process. An
-    // error on process 0 stops every process (main()).
+    // The run is on windows of the grid: process 0 alone holds the whole
+    // grid and sends each process its window once the cells are split
+    // (setup_bodies()). An error on process 0 stops every process
+    // (main()).
     const bool several = Parallel::n_processes(MPI_COMM_WORLD) > 1;
-    root = !several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    prm.enter_subsection("Membrane");
-    windows = several && !prm.get_bool("Enabled");
-    prm.leave_subsection();
+    root    = !several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    windows = several;
     if (root)
       {
         Triangulation<dim> triangulation;
@@ -159,11 +156,9 @@ namespace fsgmpm
       }
     else
       grid = std::make_unique<BackgroundGrid<dim>>();
-    if (several && !windows)
-      grid->broadcast(MPI_COMM_WORLD);
     // What follows needs the whole grid: with windows, process 0 does it
     // (a window gets the velocity fields and nodal volumes from it).
-    if (root || !windows)
+    if (root)
       {
         unsigned int n_fields = 1;
         for (const auto &body : bodies)
@@ -203,9 +198,16 @@ namespace fsgmpm
                  : grid->max_altitude_global;
       return h;
     };
-    // (With windows there is no membrane, and a process's grid is empty
-    // until setup_bodies() gives it its window.)
-    setup_membrane(prm, windows ? Point<dim>() : cell_size());
+    // The membrane's mesh and fill need the cell size and the mesh's z
+    // range. With windows a process's grid is empty until setup_bodies()
+    // gives it its window: process 0 sends them.
+    std::pair<Point<dim>, std::pair<double, double>> h_and_z;
+    if (root)
+      h_and_z = {cell_size(),
+                 {grid->lower_corner[dim - 1], grid->upper_corner[dim - 1]}};
+    if (windows)
+      h_and_z = Utilities::MPI::broadcast(MPI_COMM_WORLD, h_and_z, 0);
+    setup_membrane(prm, h_and_z.first, h_and_z.second);
     setup_bodies();
     scene_monitors = std::make_unique<SceneMonitors<dim>>(
       prm, grid->lower_corner, cell_size(), bodies.size(), membrane != nullptr);
@@ -370,8 +372,9 @@ namespace fsgmpm
 
   template <int dim>
   void
-  Simulator<dim>::setup_membrane(ParameterHandler &prm,
-                                 const Point<dim> &cell_size)
+  Simulator<dim>::setup_membrane(ParameterHandler               &prm,
+                                 const Point<dim>               &cell_size,
+                                 const std::pair<double, double> z_range)
   {
     const MembraneDescription<dim> description(prm);
     if (!description.enabled)
@@ -383,9 +386,8 @@ namespace fsgmpm
                                    "(Membrane/Enabled = true)."));
         return;
       }
-    const double h = cell_size[0];
-    membrane_z_range
-      = {grid->lower_corner[dim - 1], grid->upper_corner[dim - 1]};
+    const double h   = cell_size[0];
+    membrane_z_range = z_range;
     if (description.shape != "gmsh")
       membrane_outline = description.outline(h);
 
@@ -453,18 +455,25 @@ namespace fsgmpm
                 ExcMessage("The membrane must be one closed loop."));
     membrane_split_length = description.split_fraction * h;
 
-    const PointLocator<dim> locator(*grid);
-    for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
+    // The nodes' cells, by whole-grid numbers: with windows process 0
+    // (which alone holds the whole grid) finds them for all.
+    if (root)
       {
-        membrane->cell[a] = locator.locate(membrane->position[a], 0);
-        AssertThrow(membrane->cell[a] != BackgroundGrid<dim>::invalid,
-                    ExcMessage("Membrane node " + std::to_string(a) + " at "
-                               + "(" + format(membrane->position[a]) + ")"
-                               + " lies outside the mesh; move or shrink "
-                                 "the membrane (Membrane/Lowest point, "
-                                 "Circumference and Enclosed area, or "
-                                 "Polygon vertices) or enlarge the grid."));
+        const PointLocator<dim> locator(*grid);
+        for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
+          {
+            membrane->cell[a] = locator.locate(membrane->position[a], 0);
+            AssertThrow(membrane->cell[a] != BackgroundGrid<dim>::invalid,
+                        ExcMessage("Membrane node " + std::to_string(a) + " at "
+                                   + "(" + format(membrane->position[a]) + ")"
+                                   + " lies outside the mesh; move or shrink "
+                                     "the membrane (Membrane/Lowest point, "
+                                     "Circumference and Enclosed area, or "
+                                     "Polygon vertices) or enlarge the grid."));
+          }
       }
+    if (windows)
+      Parallel::broadcast_vector(membrane->cell, MPI_COMM_WORLD, 0);
     AssertThrow(membrane->max_element_length()
                     <= membrane_split_length * (1 + 1e-9)
                   || dim == 2,
@@ -495,7 +504,7 @@ namespace fsgmpm
     // holds the whole grid), and hands every process its window and the
     // ids of the first points of each body in each cell.
     std::vector<unsigned int> points_per_cell, first_ids;
-    if (root || !windows)
+    if (root)
       {
         points_per_cell.assign(grid->n_cells(), 0);
         const std::vector<std::uint8_t> store_none(grid->n_base_cells(), 0);
@@ -512,27 +521,23 @@ namespace fsgmpm
         const MPI_Comm comm = MPI_COMM_WORLD;
         owners = DomainPartition<dim>::split(*grid, points_per_cell, comm);
         const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-        if (windows)
-          {
-            // The points each process keeps, for the exact room.
-            std::vector<unsigned int> kept(
-              Utilities::MPI::n_mpi_processes(comm), 0);
-            for (unsigned int c = 0; c < points_per_cell.size(); ++c)
-              kept[owners[c]] += points_per_cell[c];
-            const int ierr = MPI_Scatter(
-              kept.data(), 1, MPI_UNSIGNED, &n_kept, 1, MPI_UNSIGNED, 0, comm);
-            AssertThrowMPI(ierr);
-            Parallel::broadcast_vector(first_ids, comm, 0);
-            adopt_owners(owners);
-          }
+        // The points each process keeps, for the exact room.
+        std::vector<unsigned int> kept(Utilities::MPI::n_mpi_processes(comm),
+                                       0);
+        for (unsigned int c = 0; c < points_per_cell.size(); ++c)
+          kept[owners[c]] += points_per_cell[c];
+        const int ierr = MPI_Scatter(
+          kept.data(), 1, MPI_UNSIGNED, &n_kept, 1, MPI_UNSIGNED, 0, comm);
+        AssertThrowMPI(ierr);
+        Parallel::broadcast_vector(first_ids, comm, 0);
+        adopt_owners(owners);
         mine.resize(grid->n_base_cells());
         for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
           mine[c] = owners[grid->global_cell(c)] == rank;
       }
-    if (!windows)
-      for (unsigned int c = 0; c < grid->n_cells(); ++c)
-        if (mine.empty() || mine[c % grid->n_base_cells()])
-          n_kept += points_per_cell[c];
+    else
+      for (const unsigned int n : points_per_cell)
+        n_kept += n;
     particles = ParticleStore<dim>();
     particles.reserve(n_kept);
     fill_bodies(mine.empty() ? nullptr : &mine,
@@ -550,8 +555,6 @@ namespace fsgmpm
     if (params.use_apic)
       particles.enable_affine_velocity();
     particles.sort_by_cell(grid->n_cells());
-    if (!owners.empty() && !windows)
-      adopt_owners(owners);
   }
 
 
@@ -568,36 +571,34 @@ namespace fsgmpm
     // METIS's.)
     if (grid->n_cells() > 0)
       DomainPartition<dim>::check_owners(*grid, owners, n_ranks);
-    if (windows)
+    Assert(windows, ExcInternalError());
+    if (root && !whole_grid)
+      whole_grid = std::make_unique<BackgroundGrid<dim>>(std::move(*grid));
+    // In place: the step and the constraints refer to *grid.
+    if (root)
       {
-        if (root && !whole_grid)
-          whole_grid = std::make_unique<BackgroundGrid<dim>>(std::move(*grid));
-        // In place: the step and the constraints refer to *grid.
-        if (root)
-          {
-            for (unsigned int q = 1; q < n_ranks; ++q)
-              whole_grid->send_window(
-                DomainPartition<dim>::window_cells(*whole_grid, owners, q),
-                q,
-                comm);
-            *grid = whole_grid->window(
-              DomainPartition<dim>::window_cells(*whole_grid, owners, 0));
-          }
-        else
-          *grid = BackgroundGrid<dim>::receive_window(0, comm);
-        // In place too (the step refers to it); none yet at the start.
-        NodalConstraints<dim> window_constraints(*grid,
-                                                 params.walls,
-                                                 params.moving_wall);
-        if (constraints)
-          *constraints = std::move(window_constraints);
-        else
-          constraints = std::make_unique<NodalConstraints<dim>>(
-            std::move(window_constraints));
-        constraints->set_time(time);
-        nodes.resize(grid->n_nodes());
-        smoothing.resize(materials.size(), grid->n_nodes());
+        for (unsigned int q = 1; q < n_ranks; ++q)
+          whole_grid->send_window(
+            DomainPartition<dim>::window_cells(*whole_grid, owners, q),
+            q,
+            comm);
+        *grid = whole_grid->window(
+          DomainPartition<dim>::window_cells(*whole_grid, owners, 0));
       }
+    else
+      *grid = BackgroundGrid<dim>::receive_window(0, comm);
+    // In place too (the step refers to it); none yet at the start.
+    NodalConstraints<dim> window_constraints(*grid,
+                                             params.walls,
+                                             params.moving_wall);
+    if (constraints)
+      *constraints = std::move(window_constraints);
+    else
+      constraints = std::make_unique<NodalConstraints<dim>>(
+        std::move(window_constraints));
+    constraints->set_time(time);
+    nodes.resize(grid->n_nodes());
+    smoothing.resize(materials.size(), grid->n_nodes());
     partition = std::make_unique<DomainPartition<dim>>(comm, *grid);
     partition->set_owners(owners);
     DistributedPoints::move_to_owners(*partition, particles);

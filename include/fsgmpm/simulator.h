@@ -227,8 +227,12 @@ namespace fsgmpm
     }
 
   private:
+    /// The membrane, its cells located on the whole grid; the mesh's cell
+    /// size and z range given (a window may not have the grid yet).
     void
-    setup_membrane(ParameterHandler &prm, const Point<dim> &cell_size);
+    setup_membrane(ParameterHandler               &prm,
+                   const Point<dim>               &cell_size,
+                   const std::pair<double, double> z_range);
     /// Fill the bodies; with MPI, partition the cells by the points of
     /// each and keep this process's points.
     void
@@ -297,19 +301,19 @@ namespace fsgmpm
     /**
      * MPI: take @p owners (of the cells of the whole grid) as the
      * partition, and move the points, whose cells are numbered in the
-     * whole grid on entry, to their owners. A scene without a membrane
-     * then holds only its window of the grid (DomainPartition::
-     * window_cells()), which process 0 cuts from the whole grid and sends;
-     * process 0 keeps the whole grid (whole_grid) for METIS and the grid's
-     * output. A membrane reaches over the whole grid: its scenes keep it.
+     * whole grid on entry, to their owners. A process then holds only its
+     * window of the grid (DomainPartition::window_cells()), which process
+     * 0 cuts from the whole grid and sends; process 0 keeps the whole grid
+     * (whole_grid) for METIS and the grid's output. Every process holds
+     * the whole membrane (MembraneCoupling).
      */
     void
     adopt_owners(const std::vector<unsigned int> &owners);
 
     Parameters<dim>                   params;
     std::vector<BodyDescription<dim>> bodies;
-    /// The grid the step runs on: the whole grid, or with MPI (scenes
-    /// without a membrane) this process's window of it (adopt_owners()).
+    /// The grid the step runs on: the whole grid, or with MPI this
+    /// process's window of it (adopt_owners()).
     std::unique_ptr<BackgroundGrid<dim>> grid;
     /// Process 0 of an MPI run on windows: the whole grid.
     std::unique_ptr<BackgroundGrid<dim>>   whole_grid;
@@ -342,8 +346,8 @@ namespace fsgmpm
     /// serial). Rank 0 writes the files.
     std::unique_ptr<DomainPartition<dim>> partition;
     bool                                  root = true;
-    /// MPI, a scene without a membrane: each process holds its window of
-    /// the grid, process 0 the whole grid besides (adopt_owners()).
+    /// MPI (more than one process): each process holds its window of the
+    /// grid, process 0 the whole grid besides (adopt_owners()).
     bool windows = false;
     /// MPI statistics for summary.json: repartitions so far, the ghost
     /// points of the last step (this process's ratio to its owned points;

@@ -232,7 +232,8 @@ namespace fsgmpm
   template <int dim>
   unsigned int
   BackgroundGrid<dim>::find_cell_brute_force(const Point<dim> &x,
-                                             const double      tolerance) const
+                                             const double      tolerance,
+                                             double           *excess) const
   {
     unsigned int best        = invalid;
     double       best_excess = -std::numeric_limits<double>::max();
@@ -246,6 +247,8 @@ namespace fsgmpm
             best_excess = lmin;
           }
       }
+    if (excess != nullptr)
+      *excess = best_excess;
     return best;
   }
 
@@ -421,50 +424,10 @@ namespace fsgmpm
 
 
 
-  using Parallel::broadcast_vector;
-  using Parallel::for_each_piece;
-
-
-
-  template <int dim>
-  void
-  BackgroundGrid<dim>::broadcast(const MPI_Comm    &communicator,
-                                 const unsigned int root)
-  {
-    AssertThrow(n_fields == 1 && !is_window(),
-                ExcMessage("Broadcast a whole grid, before its velocity "
-                           "fields."));
-    std::vector<double> scalars;
-    if (Utilities::MPI::this_mpi_process(communicator) == root)
-      {
-        scalars = {min_altitude_global, max_altitude_global, double(n_colours)};
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            scalars.push_back(lower_corner[d]);
-            scalars.push_back(upper_corner[d]);
-          }
-      }
-    broadcast_vector(scalars, communicator, root);
-    min_altitude_global = scalars[0];
-    max_altitude_global = scalars[1];
-    n_colours           = static_cast<unsigned int>(scalars[2]);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower_corner[d] = scalars[3 + 2 * d];
-        upper_corner[d] = scalars[4 + 2 * d];
-      }
-    broadcast_vector(node_positions, communicator, root);
-    broadcast_vector(node_volume, communicator, root);
-    broadcast_vector(cell_nodes, communicator, root);
-    broadcast_vector(cell_neighbors, communicator, root);
-    broadcast_vector(boundary_faces, communicator, root);
-    broadcast_vector(block_colour, communicator, root);
-  }
-
-
-
   namespace
   {
+    using Parallel::for_each_piece;
+
     // The bytes of a vector of plain values, point to point, in pieces.
     constexpr int window_tag = 1511;
 

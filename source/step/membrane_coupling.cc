@@ -25,17 +25,26 @@ namespace fsgmpm
   MembraneCoupling<dim>::p2g(NodalFields<dim> &nodes)
   {
     // The shape values at the node (start of step) are the transfer
-    // weights of every membrane stage of this step.
+    // weights of every membrane stage of this step. MPI: a node whose cell
+    // the window lacks adds nothing here; it touches no node that this
+    // process counts (a window holds every cell around its own nodes).
     weights.resize(membrane.n_nodes());
+    cell_here.resize(membrane.n_nodes());
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       {
-        const auto l = grid.barycentric(membrane.cell[a], membrane.position[a]);
+        cell_here[a] = grid.local_cell(membrane.cell[a]);
+        weights[a]   = {};
+        if (cell_here[a] == BackgroundGrid<dim>::invalid)
+          continue;
+        const auto l = grid.barycentric(cell_here[a], membrane.position[a]);
         std::copy(l.begin(), l.end(), weights[a].begin());
       }
 
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       {
-        const unsigned int c = membrane.cell[a];
+        const unsigned int c = cell_here[a];
+        if (c == BackgroundGrid<dim>::invalid)
+          continue;
         nodes.activate(grid.cell_nodes[c]);
         const auto  &lambda = weights[a];
         const double m      = membrane.mass[a];
@@ -83,8 +92,9 @@ namespace fsgmpm
     touched.clear();
     touched.reserve(membrane.n_nodes() * (dim + 1));
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
-      for (const unsigned int i : grid.cell_nodes[membrane.cell[a]])
-        touched.push_back(i);
+      if (cell_here[a] != BackgroundGrid<dim>::invalid)
+        for (const unsigned int i : grid.cell_nodes[cell_here[a]])
+          touched.push_back(i);
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     auto index_of = [&](const unsigned int i) {
@@ -96,8 +106,10 @@ namespace fsgmpm
     touched_stiffness.assign(touched.size(), SymmetricTensor<2, dim>());
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       {
-        const unsigned int c      = membrane.cell[a];
-        const auto        &lambda = weights[a];
+        const unsigned int c = cell_here[a];
+        if (c == BackgroundGrid<dim>::invalid)
+          continue;
+        const auto &lambda = weights[a];
         for (unsigned int k = 0; k < dim + 1; ++k)
           touched_stiffness[index_of(grid.cell_nodes[c][k])]
             += (c0 * std::max(lambda[k], 0.)) * k_node[a];
@@ -175,7 +187,8 @@ namespace fsgmpm
         return values;
       }
     const auto owned = [&](const unsigned int a) {
-      return partition->owner(membrane.cell[a]) == partition->rank();
+      return cell_here[a] != BackgroundGrid<dim>::invalid
+             && partition->owner(cell_here[a]) == partition->rank();
     };
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       if (owned(a))
@@ -193,7 +206,7 @@ namespace fsgmpm
   MembraneCoupling<dim>::grid_velocity(const NodalFields<dim> &nodes,
                                        const unsigned int      a) const
   {
-    const unsigned int c      = membrane.cell[a];
+    const unsigned int c      = cell_here[a];
     const auto        &lambda = weights[a];
     Tensor<1, dim>     v;
     for (unsigned int k = 0; k < dim + 1; ++k)
@@ -219,8 +232,10 @@ namespace fsgmpm
   {
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       {
-        const unsigned int c      = membrane.cell[a];
-        const auto        &lambda = weights[a];
+        const unsigned int c = cell_here[a];
+        if (c == BackgroundGrid<dim>::invalid)
+          continue;
+        const auto &lambda = weights[a];
         for (unsigned int k = 0; k < dim + 1; ++k)
           nodes.momentum[grid.cell_nodes[c][k]]
             += (lambda[k] * membrane.mass[a]) * membrane.velocity[a];
@@ -245,8 +260,9 @@ namespace fsgmpm
       {
         const Tensor<1, dim> &dx = displacement[a];
         membrane.position[a] += dx;
-        ratio
-          = std::max(ratio, dx.norm() / grid.min_altitude(membrane.cell[a]));
+        // (MPI: the caller takes the largest over the processes.)
+        if (cell_here[a] != BackgroundGrid<dim>::invalid)
+          ratio = std::max(ratio, dx.norm() / grid.min_altitude(cell_here[a]));
       }
     return ratio;
   }
@@ -269,20 +285,113 @@ namespace fsgmpm
       }
     if (split_length > 0)
       membrane.split_long_elements(split_length, unknown);
-    const PointLocator<dim> locator(grid);
-    unsigned int            outside = 0;
-    for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+    unsigned int outside = 0;
+    if (grid.is_window())
+      outside = locate_on_windows();
+    else
       {
-        // New nodes start the walk from cell 0 (rare: only after a split).
-        const unsigned int guess
-          = membrane.cell[a] == unknown ? 0 : membrane.cell[a];
-        const unsigned int c = locator.locate(membrane.position[a], guess);
-        if (c == unknown)
-          ++outside;
-        else
-          membrane.cell[a] = c;
+        const PointLocator<dim> locator(grid);
+        for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+          {
+            // New nodes start the walk from cell 0 (rare: only after a
+            // split).
+            const unsigned int guess
+              = membrane.cell[a] == unknown ? 0 : membrane.cell[a];
+            const unsigned int c = locator.locate(membrane.position[a], guess);
+            if (c == unknown)
+              ++outside;
+            else
+              membrane.cell[a] = c;
+          }
       }
     membrane.compute_forces();
+    return outside;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MembraneCoupling<dim>::locate_on_windows()
+  {
+    AssertThrow(partition != nullptr,
+                ExcMessage("A membrane on a window of the grid needs the "
+                           "partition (attach_partition())."));
+    const MPI_Comm          comm    = partition->get_communicator();
+    const unsigned int      unknown = BackgroundGrid<dim>::invalid;
+    const unsigned int      n       = membrane.n_nodes();
+    const PointLocator<dim> locator(grid);
+
+    // 1. The walk of the whole grid's locate(), from the node's cell, by
+    // every process that holds that cell. A walk that settles inside a
+    // window took the whole grid's path, so all that settle agree; the
+    // others (out of the window or the mesh) give unknown, the largest
+    // number, and the minimum over the processes is the walk's cell.
+    std::vector<unsigned int> found(n, unknown);
+    for (unsigned int a = 0; a < n; ++a)
+      {
+        const unsigned int guess = grid.local_cell(membrane.cell[a]);
+        if (guess == unknown)
+          continue;
+        const unsigned int c = locator.walk(membrane.position[a], guess);
+        if (c != unknown)
+          found[a] = grid.global_cell(c);
+      }
+    int ierr = MPI_Allreduce(
+      MPI_IN_PLACE, found.data(), n, MPI_UNSIGNED, MPI_MIN, comm);
+    AssertThrowMPI(ierr);
+
+    // 2. The nodes no walk placed (new nodes after a split, walks out of
+    // the mesh or across every window's edge): the whole grid's search,
+    // over the windows. Each process's best cell (the largest smallest
+    // barycentric coordinate, the lowest number on a tie) and MAXLOC's
+    // tie rule (the lower index) give the whole grid's answer. The
+    // membrane lives in velocity field 0, where the search looks.
+    std::vector<unsigned int> rest;
+    for (unsigned int a = 0; a < n; ++a)
+      if (found[a] == unknown)
+        rest.push_back(a);
+    if (!rest.empty())
+      {
+        AssertThrow(grid.n_global_cells() <= std::numeric_limits<int>::max(),
+                    ExcMessage("The membrane's search numbers cells by int: "
+                               "at most 2^31 - 1 cells."));
+        struct ExcessAndCell
+        {
+          double excess;
+          int    cell;
+        };
+        std::vector<ExcessAndCell> best(rest.size());
+        for (unsigned int r = 0; r < rest.size(); ++r)
+          {
+            double             excess = 0;
+            const unsigned int c
+              = grid.find_cell_brute_force(membrane.position[rest[r]],
+                                           PointLocator<dim>::default_tolerance,
+                                           &excess);
+            best[r] = c == unknown
+                        ? ExcessAndCell{-std::numeric_limits<double>::max(), 0}
+                        : ExcessAndCell{excess,
+                                        static_cast<int>(grid.global_cell(c))};
+          }
+        ierr = MPI_Allreduce(MPI_IN_PLACE,
+                             best.data(),
+                             best.size(),
+                             MPI_DOUBLE_INT,
+                             MPI_MAXLOC,
+                             comm);
+        AssertThrowMPI(ierr);
+        for (unsigned int r = 0; r < rest.size(); ++r)
+          if (best[r].excess >= -PointLocator<dim>::default_tolerance)
+            found[rest[r]] = best[r].cell;
+      }
+
+    unsigned int outside = 0;
+    for (unsigned int a = 0; a < n; ++a)
+      if (found[a] == unknown)
+        ++outside;
+      else
+        membrane.cell[a] = found[a];
     return outside;
   }
 

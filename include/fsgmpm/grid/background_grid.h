@@ -49,19 +49,8 @@ namespace fsgmpm
      */
     explicit BackgroundGrid(Triangulation<dim> &&triangulation);
 
-    /// An empty grid, for broadcast() to fill.
+    /// An empty grid, for receive_window() to fill.
     BackgroundGrid() = default;
-
-    /**
-     * MPI: make the grid of every process of @p communicator a copy of
-     * process @p root's, which built it from the mesh; the others call
-     * this on an empty grid. Then only one process ever holds deal.II's
-     * mesh, whose creation is the peak of a process's memory (its cell
-     * list, connectivity and arrays: some 320 B per triangle, where the
-     * grid keeps about 32 B). Call before set_velocity_fields().
-     */
-    void
-    broadcast(const MPI_Comm &communicator, const unsigned int root = 0);
 
     /**
      * MPI: the part of this grid that one process needs, numbered on its
@@ -285,9 +274,13 @@ namespace fsgmpm
 
     /// Index of the cell of field 0 containing @p x by testing all cells
     /// (slow; used only as a fallback and in tests). Returns invalid if none
-    /// does.
+    /// does. The cell with the largest smallest barycentric coordinate
+    /// wins, the lowest number on a tie; @p excess (if given) receives that
+    /// coordinate.
     unsigned int
-    find_cell_brute_force(const Point<dim> &x, const double tolerance) const;
+    find_cell_brute_force(const Point<dim> &x,
+                          const double      tolerance,
+                          double           *excess = nullptr) const;
 
     /// Bytes held by the per-cell and per-node arrays.
     std::size_t

@@ -208,7 +208,9 @@ namespace fsgmpm
     std::vector<double>         mass;
     /// Element forces acting on the node (tension pulls nodes together).
     std::vector<Tensor<1, dim>> force;
-    /// Background cell holding the node.
+    /// Background cell holding the node, by its number in the whole grid
+    /// (MPI: the same on every process, whatever window of the grid it
+    /// holds).
     std::vector<unsigned int> cell;
 
     /// 3D membrane extruded along z (ellipse or polygon shapes): its nodes

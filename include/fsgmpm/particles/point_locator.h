@@ -23,8 +23,10 @@ namespace fsgmpm
   class PointLocator
   {
   public:
+    static constexpr double default_tolerance = 1e-12;
+
     explicit PointLocator(const BackgroundGrid<dim> &grid,
-                          const double               tolerance = 1e-12)
+                          const double tolerance = default_tolerance)
       : grid(grid)
       , tolerance(tolerance)
     {}
@@ -42,6 +44,41 @@ namespace fsgmpm
            const unsigned int       guess,
            const CellGeometry<dim> &guess_geometry) const
     {
+      const unsigned int c = walk(x, guess, guess_geometry, true);
+      if (c != BackgroundGrid<dim>::invalid)
+        return c;
+      // The walk stays in the guess's velocity field; so does the search.
+      const unsigned int found = grid.find_cell_brute_force(x, tolerance);
+      return found == BackgroundGrid<dim>::invalid
+               ? found
+               : grid.cell_in_field(found, grid.field_of_cell(guess));
+    }
+
+    /// The walk of locate() alone: the cell it settles in, or invalid if
+    /// it leaves the cells this grid holds or does not settle (no search).
+    /// On a window, the membrane's location (MembraneCoupling::relocate())
+    /// combines the walks and searches of all processes.
+    unsigned int
+    walk(const Point<dim> &x, const unsigned int guess) const
+    {
+      return walk(x, guess, grid.geometry(guess), false);
+    }
+
+    static constexpr unsigned int max_walk_steps = 64;
+
+  private:
+    const BackgroundGrid<dim> &grid;
+    const double               tolerance;
+
+    /// The walk from @p guess across the face with the most negative
+    /// barycentric coordinate. If @p stop_beyond_window, a walk out through
+    /// a window's edge stops the run (check_not_beyond_window()).
+    unsigned int
+    walk(const Point<dim>        &x,
+         const unsigned int       guess,
+         const CellGeometry<dim> &guess_geometry,
+         const bool               stop_beyond_window) const
+    {
       unsigned int c = guess;
       for (unsigned int step = 0; step < max_walk_steps; ++step)
         {
@@ -56,23 +93,14 @@ namespace fsgmpm
           const unsigned int next = grid.cell_neighbors[c][kmin];
           if (next == BackgroundGrid<dim>::invalid)
             {
-              check_not_beyond_window(x, c, kmin);
+              if (stop_beyond_window)
+                check_not_beyond_window(x, c, kmin);
               break;
             }
           c = next;
         }
-      // The walk stays in the guess's velocity field; so does the search.
-      const unsigned int found = grid.find_cell_brute_force(x, tolerance);
-      return found == BackgroundGrid<dim>::invalid
-               ? found
-               : grid.cell_in_field(found, grid.field_of_cell(guess));
+      return BackgroundGrid<dim>::invalid;
     }
-
-    static constexpr unsigned int max_walk_steps = 64;
-
-  private:
-    const BackgroundGrid<dim> &grid;
-    const double               tolerance;
 
     /// MPI: in a process's window of the grid a face without a neighbour
     /// is either the mesh's boundary or the edge of the window. A point

@@ -31,8 +31,13 @@ namespace fsgmpm
    * MpmStep owns one when a membrane is attached.
    *
    * MPI (attach_partition()): every process holds the whole membrane and
-   * adds all of it to its nodes (p2g, remap), so every node it computes
-   * exactly gets the membrane's full share. What reads grid values (the
+   * its window of the grid (the cells of its own nodes and the cells
+   * around them). It adds the membrane nodes in its window to its nodes
+   * (p2g, remap): every node it computes exactly gets the membrane's full
+   * share, as a window holds every cell that touches such a node. The
+   * nodes' cells are whole-grid numbers, the same on every process, found
+   * by all processes together (locate_on_windows()). What reads grid
+   * values (the
    * nodes' velocities and displacements) is computed by the owner of the
    * node's cell, the only process whose values there are exact, and summed
    * over the processes (the others contribute -0, so the sum is the
@@ -140,6 +145,10 @@ namespace fsgmpm
 
     std::vector<std::array<double, dim + 1>> weights;
 
+    /// Each node's cell in this grid (on a window, invalid where the window
+    /// lacks it; its weights are then 0), as of the last p2g().
+    std::vector<unsigned int> cell_here;
+
     const DomainPartition<dim> *partition = nullptr;
 
     /// MPI: the value of @p f(a) for every membrane node a, computed by the
@@ -148,6 +157,14 @@ namespace fsgmpm
     template <typename Function>
     std::vector<Tensor<1, dim>>
     from_cell_owners(const Function &f) const;
+
+    /// relocate() on windows of the grid: every node's cell as the whole
+    /// grid's location would find it (PointLocator::locate(): the walk
+    /// from the old cell, else the search of all cells), by the walks and
+    /// searches of all processes, combined in two all-reductions. Returns
+    /// the number of nodes outside the mesh (their cell is unchanged).
+    unsigned int
+    locate_on_windows();
 
     /// sum_i N_i(x_a) v_i over the nodes of node a's cell, with the
     /// transfer weights.
