@@ -10,17 +10,24 @@ cd "$work"
 failures=0
 passed=0
 
+# How fsgmpm is started: serially, or (below) with mpirun; a run that does
+# not stop within 120 s hangs.
+runner=(timeout 120)
+
 # expect_error <name> <regex the message must match> <fsgmpm arguments...>
 expect_error() {
   local name=$1 pattern=$2
   shift 2
   rm -rf out
-  "$exe" "$@" --set "Output/Directory=out" >stdout.txt 2>stderr.txt
+  "${runner[@]}" "$exe" "$@" --set "Output/Directory=out" >stdout.txt 2>stderr.txt
   local status=$?
   local msg
   msg=$(cat stdout.txt stderr.txt)
   if [ $status -eq 0 ]; then
     echo "FAIL $name: exit status 0"; failures=$((failures + 1)); return
+  fi
+  if [ $status -eq 124 ]; then
+    echo "FAIL $name: hangs (no exit within 120 s)"; failures=$((failures + 1)); return
   fi
   if ! grep -Eq "$pattern" <<<"$msg"; then
     echo "FAIL $name: message does not match /$pattern/:"; echo "$msg"
@@ -86,6 +93,20 @@ w="$2/../prm/water_column_collapse_n2.prm"
 expect_error "gate off the grid lines" "Moving wall/Lower corner and Upper corner: the wall's plane x = 0.115 holds no grid node" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Lower corner=0.115, 0" --set "Moving wall/Upper corner=0.115, 0.3"
 expect_error "gate pushed along its normal" "Moving wall/Velocity history: <0: 1 2> moves the wall along its normal" "$w" --set "Moving wall/Enabled=true" --set "Moving wall/Velocity history=0: 1 2"
 expect_error "repartition imbalance below 1" "Simulation/Repartition imbalance is the ratio .* at least 1 .*got 0.5" --set "Simulation/Repartition imbalance=0.5"
+
+# MPI: an error found on process 0 at the start (which alone holds the whole
+# grid) stops every process with the message and a non-zero exit status
+# (MPI_Abort), never a hang of the processes waiting for their windows.
+if ! command -v mpirun >/dev/null; then
+  echo "FAIL MPI cases: no mpirun (Debian package openmpi-bin)"
+  failures=$((failures + 1))
+else
+  source "$2/mpi/mpi_launch.sh"
+  runner=(timeout 120 mpirun --oversubscribe -np 2)
+  expect_error "MPI: body outside the mesh" "Body 0.*outside the background mesh" --set "Bodies/Body 0/Box upper corner=1.5, 0.4"
+  expect_error "MPI: unknown boundary id" "Grid/Boundary conditions names boundary id 7" --set "Grid/Boundary conditions=7: slip"
+  expect_error "MPI: membrane outside the mesh" "Membrane node .* lies outside the mesh" "$g" --set "Membrane/Lowest point=5.5, 0"
+fi
 
 echo "bad input: $passed passed, $failures failed"
 [ $failures -eq 0 ]
