@@ -462,7 +462,12 @@ namespace fsgmpm
         const PointLocator<dim> locator(*grid);
         for (unsigned int a = 0; a < membrane->n_nodes(); ++a)
           {
-            membrane->cell[a] = locator.locate(membrane->position[a], 0);
+            // As a walk from cell 0, else the search of all cells; the
+            // search starts near the previous node.
+            membrane->cell[a]
+              = locator.locate(membrane->position[a],
+                               0,
+                               a > 0 ? membrane->cell[a - 1] : 0);
             AssertThrow(membrane->cell[a] != BackgroundGrid<dim>::invalid,
                         ExcMessage("Membrane node " + std::to_string(a) + " at "
                                    + "(" + format(membrane->position[a]) + ")"

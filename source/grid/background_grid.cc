@@ -253,6 +253,40 @@ namespace fsgmpm
   }
 
   template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::best_cell_around(const Point<dim>  &x,
+                                        const double       tolerance,
+                                        const unsigned int start) const
+  {
+    Assert(start < n_base_cells(), ExcIndexRange(start, 0, n_base_cells()));
+    // find_cell_brute_force() keeps the first cell (in number order) with
+    // the largest smallest barycentric coordinate: the same rule here.
+    unsigned int              best        = invalid;
+    double                    best_excess = -std::numeric_limits<double>::max();
+    std::vector<unsigned int> seen        = {start};
+    for (unsigned int q = 0; q < seen.size(); ++q)
+      {
+        const unsigned int c    = seen[q];
+        const auto         l    = barycentric(c, x);
+        const double       lmin = *std::min_element(l.begin(), l.end());
+        if (lmin < -tolerance)
+          continue;
+        if (lmin > best_excess || (lmin == best_excess && c < best))
+          {
+            best        = c;
+            best_excess = lmin;
+          }
+        for (const unsigned int nb : cell_neighbors[c])
+          if (nb != invalid
+              && std::find(seen.begin(), seen.end(), nb) == seen.end())
+            seen.push_back(nb);
+      }
+    return best;
+  }
+
+
+
+  template <int dim>
   BackgroundGrid<dim>
   BackgroundGrid<dim>::window(const std::vector<unsigned int> &cells) const
   {

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fsgmpm/particles/body_filler.h>
+#include <fsgmpm/particles/point_locator.h>
 
 #include <algorithm>
 #include <limits>
@@ -125,23 +126,30 @@ namespace fsgmpm
         + (shape.parameters.empty() ? "" : ", from " + shape.parameters);
     // (A window is part of the mesh: the process that fills the whole
     // grid checks the whole body.)
+    // The outline's points follow one another: each walk starts from the
+    // previous point's cell, and searches all cells only if it fails (a
+    // polygon of 1 840 vertices on 422 000 cells: 12 s when every point
+    // searched all cells). Round-off on the mesh boundary is allowed.
+    const PointLocator<dim> locator(grid, 1e-9);
+    unsigned int            previous = 0;
     if (!grid.is_window())
       for (const Point<dim> &p : shape.outline_points())
         {
-          // Allow round-off on the mesh boundary.
-          const double tol = 1e-9;
-          AssertThrow(
-            grid.find_cell_brute_force(p, tol) != BackgroundGrid<dim>::invalid,
-            ExcMessage(body_name
-                       + ") reaches outside the background mesh, e.g. "
-                         "at the point ("
-                       +
-                       [&] {
-                         std::ostringstream s;
-                         s << p;
-                         return s.str();
-                       }()
-                       + "). Move the body or enlarge the grid."));
+          const unsigned int c = locator.locate(p, previous);
+          if (c != BackgroundGrid<dim>::invalid)
+            previous = c;
+          AssertThrow(c != BackgroundGrid<dim>::invalid,
+                      ExcMessage(
+                        body_name
+                        + ") reaches outside the background mesh, e.g. "
+                          "at the point ("
+                        +
+                        [&] {
+                          std::ostringstream s;
+                          s << p;
+                          return s.str();
+                        }()
+                        + "). Move the body or enlarge the grid."));
         }
 
     const auto   ref   = reference_particle_points<dim>(particles_per_cell);

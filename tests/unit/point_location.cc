@@ -117,6 +117,20 @@ namespace
             EXPECT_GE(min_barycentric(grid, c, x), -tolerance)
               << what << ": point " << x << " reported in cell " << c
               << " that does not contain it";
+            // The search around any cell that holds x gives the search of
+            // all cells' answer, also on vertices, edges and faces (ties).
+            const unsigned int all = grid.find_cell_brute_force(x, tolerance);
+            EXPECT_EQ(grid.best_cell_around(x, tolerance, c), all)
+              << what << ": point " << x;
+            // So the hinted location is locate()'s, with a hint beside the
+            // answer or anywhere.
+            const unsigned int guess = any_cell(rng);
+            for (const unsigned int hint :
+                 {grid.cell_neighbors[all][0], all, any_cell(rng)})
+              if (hint != BackgroundGrid<dim>::invalid)
+                EXPECT_EQ(locator.locate(x, guess, hint),
+                          locator.locate(x, guess))
+                  << what << ": point " << x;
           }
         else
           {

@@ -282,6 +282,16 @@ namespace fsgmpm
                           const double      tolerance,
                           double           *excess = nullptr) const;
 
+    /// find_cell_brute_force()'s cell, from @p start, a cell of field 0
+    /// that holds @p x up to @p tolerance: the cells that hold x are those
+    /// around the vertex, edge or face x lies on, face neighbours of one
+    /// another, so a search through face neighbours that hold x finds all
+    /// of them (a handful, not all cells).
+    unsigned int
+    best_cell_around(const Point<dim>  &x,
+                     const double       tolerance,
+                     const unsigned int start) const;
+
     /// Bytes held by the per-cell and per-node arrays.
     std::size_t
     memory_consumption() const;

@@ -54,6 +54,31 @@ namespace fsgmpm
                : grid.cell_in_field(found, grid.field_of_cell(guess));
     }
 
+    /// locate(x, guess)'s answer, found faster where the walk from @p guess
+    /// does not settle: instead of testing all cells, the search starts
+    /// from the cell a walk from @p hint (a cell near x) reaches and tests
+    /// the cells around it that hold x (BackgroundGrid::best_cell_around():
+    /// the same cell as find_cell_brute_force()). The membrane's nodes,
+    /// located from cell 0 at the start, take the previous node's cell as
+    /// the hint (a 1 cm geotube: from 18 s to well under a second).
+    unsigned int
+    locate(const Point<dim>  &x,
+           const unsigned int guess,
+           const unsigned int hint) const
+    {
+      const unsigned int c = walk(x, guess, grid.geometry(guess), true);
+      if (c != BackgroundGrid<dim>::invalid)
+        return c;
+      const unsigned int near = walk(x, hint);
+      const unsigned int found
+        = near == BackgroundGrid<dim>::invalid
+            ? grid.find_cell_brute_force(x, tolerance)
+            : grid.best_cell_around(x, tolerance, grid.cell_in_field(near, 0));
+      return found == BackgroundGrid<dim>::invalid
+               ? found
+               : grid.cell_in_field(found, grid.field_of_cell(guess));
+    }
+
     /// The walk of locate() alone: the cell it settles in, or invalid if
     /// it leaves the cells this grid holds or does not settle (no search).
     /// On a window, the membrane's location (MembraneCoupling::relocate())
