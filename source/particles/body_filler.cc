@@ -127,8 +127,8 @@ namespace fsgmpm
     // (A window is part of the mesh: the process that fills the whole
     // grid checks the whole body.)
     // The outline's points follow one another: each walk starts from the
-    // previous point's cell, and searches all cells only if it fails (a
-    // polygon of 1 840 vertices on 422 000 cells: 12 s when every point
+    // previous point's cell, and searches all cells only if it fails (the
+    // geotube at 1 cm, 422 400 cells: 11 s of its set-up when every point
     // searched all cells). Round-off on the mesh boundary is allowed.
     const PointLocator<dim> locator(grid, 1e-9);
     unsigned int            previous = 0;

@@ -60,7 +60,7 @@ namespace fsgmpm
     /// the cells around it that hold x (BackgroundGrid::best_cell_around():
     /// the same cell as find_cell_brute_force()). The membrane's nodes,
     /// located from cell 0 at the start, take the previous node's cell as
-    /// the hint (a 1 cm geotube: from 18 s to well under a second).
+    /// the hint (the geotube at 1 cm, 422 400 cells: 6 s less set-up).
     unsigned int
     locate(const Point<dim>  &x,
            const unsigned int guess,
