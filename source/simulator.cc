@@ -582,13 +582,16 @@ namespace fsgmpm
     // In place: the step and the constraints refer to *grid.
     if (root)
       {
+        std::vector<std::vector<unsigned int>> cells
+          = DomainPartition<dim>::all_window_cells(*whole_grid,
+                                                   owners,
+                                                   n_ranks);
         for (unsigned int q = 1; q < n_ranks; ++q)
-          whole_grid->send_window(
-            DomainPartition<dim>::window_cells(*whole_grid, owners, q),
-            q,
-            comm);
-        *grid = whole_grid->window(
-          DomainPartition<dim>::window_cells(*whole_grid, owners, 0));
+          {
+            whole_grid->send_window(cells[q], q, comm);
+            cells[q] = std::vector<unsigned int>();
+          }
+        *grid = whole_grid->window(cells[0]);
       }
     else
       *grid = BackgroundGrid<dim>::receive_window(0, comm);

@@ -340,6 +340,63 @@ namespace fsgmpm
 
 
 
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  DomainPartition<dim>::all_window_cells(
+    const BackgroundGrid<dim>       &grid,
+    const std::vector<unsigned int> &owners,
+    const unsigned int               n_processes)
+  {
+    AssertThrow(!grid.is_window(), ExcMessage("Take windows of a whole grid."));
+    // The caller checked the owners (check_owners()).
+    Assert(owners.size() == grid.n_cells(), ExcInternalError());
+    // A cell belongs to the window of every owner of a cell around one of
+    // its nodes. Most nodes have one owner around them: keep it; the
+    // others (on the partition's seams) are "mixed", with their owners
+    // listed aside as sorted (node, owner) pairs.
+    const unsigned int        none  = numbers::invalid_unsigned_int;
+    const unsigned int        mixed = none - 1;
+    std::vector<unsigned int> node_owner(grid.n_base_nodes(), none);
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      for (const unsigned int i : grid.cell_nodes[c])
+        if (node_owner[i] == none)
+          node_owner[i] = owners[c];
+        else if (node_owner[i] != owners[c])
+          node_owner[i] = mixed;
+    std::vector<std::pair<unsigned int, unsigned int>> around;
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      for (const unsigned int i : grid.cell_nodes[c])
+        if (node_owner[i] == mixed)
+          around.emplace_back(i, owners[c]);
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+
+    std::vector<std::vector<unsigned int>> windows(n_processes);
+    std::vector<unsigned int>              holders;
+    for (unsigned int c = 0; c < grid.n_base_cells(); ++c)
+      {
+        holders.clear();
+        for (const unsigned int i : grid.cell_nodes[c])
+          if (node_owner[i] != mixed)
+            holders.push_back(node_owner[i]);
+          else
+            for (auto it = std::lower_bound(around.begin(),
+                                            around.end(),
+                                            std::make_pair(i, 0u));
+                 it != around.end() && it->first == i;
+                 ++it)
+              holders.push_back(it->second);
+        std::sort(holders.begin(), holders.end());
+        holders.erase(std::unique(holders.begin(), holders.end()),
+                      holders.end());
+        for (const unsigned int q : holders)
+          windows[q].push_back(c);
+      }
+    return windows;
+  }
+
+
+
   template class DomainPartition<2>;
   template class DomainPartition<3>;
 } // namespace fsgmpm

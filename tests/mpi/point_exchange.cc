@@ -20,6 +20,7 @@
 // repartitions; a scene with a membrane keeps the whole grid.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/parallel/distributed_points.h>
@@ -672,6 +673,95 @@ TEST(GridWindowSize, DamBreakGrids)
                              tria);
     measure(std::make_unique<BackgroundGrid<3>>(std::move(tria)));
   }
+}
+
+
+
+// What process 0 spends cutting every process's window (at the start and
+// at each repartition): window_cells() once per process against
+// all_window_cells() in one pass, same results; the 2D dam break's grid
+// (768 000 triangles) in square blocks of cells for 4, 64 and 1 024
+// processes. Process 0 measures; the others wait.
+TEST(GridWindowSize, CuttingAllWindows)
+{
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    return;
+  Triangulation<2> tria;
+  MeshGeneration::make_box(Point<2>(), Point<2>(3.2, 4. / 3), {960, 400}, tria);
+  const BackgroundGrid<2> grid(std::move(tria));
+  for (const unsigned int side : {2u, 8u, 32u})
+    {
+      const unsigned int        n_processes = side * side;
+      std::vector<unsigned int> owners(grid.n_cells());
+      for (unsigned int c = 0; c < grid.n_cells(); ++c)
+        {
+          const Point<2> x = centre(grid, c);
+          owners[c]
+            = std::min<unsigned int>(x[0] / 3.2 * side, side - 1) * side
+              + std::min<unsigned int>(x[1] / (4. / 3) * side, side - 1);
+        }
+      Timer                                  timer;
+      std::vector<std::vector<unsigned int>> each(n_processes);
+      for (unsigned int q = 0; q < n_processes; ++q)
+        each[q] = DomainPartition<2>::window_cells(grid, owners, q);
+      const double per_process = timer.wall_time();
+      timer.restart();
+      const std::vector<std::vector<unsigned int>> all
+        = DomainPartition<2>::all_window_cells(grid, owners, n_processes);
+      const double one_pass = timer.wall_time();
+      EXPECT_EQ(all, each);
+      std::printf("cutting %u windows of %u cells: window_cells() per "
+                  "process %.3f s, all_window_cells() %.3f s\n",
+                  n_processes,
+                  grid.n_cells(),
+                  per_process,
+                  one_pass);
+    }
+}
+
+
+
+namespace
+{
+  // all_window_cells() gives, in one pass, each process's window_cells():
+  // for owners in strips (few seams) and at random (seams everywhere, a
+  // node amid up to all owners), with a process that owns no cell.
+  template <int dim>
+  void
+  check_all_windows(const unsigned int n)
+  {
+    const auto                grid = test_tools::make_unit_box_grid<dim>(n);
+    const unsigned int        n_processes = 5;
+    std::vector<unsigned int> strips(grid->n_cells()), random(grid->n_cells());
+    std::mt19937              rng(7);
+    std::uniform_int_distribution<unsigned int> any(0, n_processes - 2);
+    for (unsigned int c = 0; c < grid->n_cells(); ++c)
+      {
+        strips[c] = std::min<unsigned int>(
+          grid->node_positions[grid->cell_nodes[c][0]][0] * (n_processes - 1),
+          n_processes - 2);
+        random[c] = any(rng);
+      }
+    for (const auto &owners : {strips, random})
+      {
+        const std::vector<std::vector<unsigned int>> all
+          = DomainPartition<dim>::all_window_cells(*grid, owners, n_processes);
+        ASSERT_EQ(all.size(), n_processes);
+        for (unsigned int q = 0; q < n_processes; ++q)
+          EXPECT_EQ(all[q],
+                    DomainPartition<dim>::window_cells(*grid, owners, q))
+            << "process " << q;
+        EXPECT_TRUE(all[n_processes - 1].empty());
+      }
+  }
+} // namespace
+
+
+
+TEST(GridWindow, AllWindowsInOnePassAreEachProcesssWindow)
+{
+  check_all_windows<2>(12);
+  check_all_windows<3>(4);
 }
 
 

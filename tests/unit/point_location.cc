@@ -128,9 +128,11 @@ namespace
             for (const unsigned int hint :
                  {grid.cell_neighbors[all][0], all, any_cell(rng)})
               if (hint != BackgroundGrid<dim>::invalid)
-                EXPECT_EQ(locator.locate(x, guess, hint),
-                          locator.locate(x, guess))
-                  << what << ": point " << x;
+                {
+                  EXPECT_EQ(locator.locate(x, guess, hint),
+                            locator.locate(x, guess))
+                    << what << ": point " << x;
+                }
           }
         else
           {

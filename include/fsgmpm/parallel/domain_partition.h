@@ -216,6 +216,15 @@ namespace fsgmpm
                  const std::vector<unsigned int> &owners,
                  const unsigned int               process);
 
+    /// window_cells() of every one of @p n_processes processes, in one
+    /// pass over the cells (process 0 cuts all windows at the start and at
+    /// every repartition: calling window_cells() for each process costs
+    /// processes x cells).
+    static std::vector<std::vector<unsigned int>>
+    all_window_cells(const BackgroundGrid<dim>       &grid,
+                     const std::vector<unsigned int> &owners,
+                     const unsigned int               n_processes);
+
   private:
     MPI_Comm                   comm;
     const BackgroundGrid<dim> &grid;
