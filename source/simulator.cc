@@ -306,21 +306,11 @@ namespace fsgmpm
         || imbalance <= params.repartition_imbalance)
       return;
     // The points of every cell of the whole grid, for METIS on process 0.
-    const unsigned int        n_cells = grid->n_global_cells();
-    std::vector<unsigned int> local(n_cells, 0),
-      points_per_cell(root ? n_cells : 0);
-    for (const unsigned int c : particles.occupied_cells)
-      local[grid->global_cell(c)]
-        = particles.cell_end(c) - particles.cell_begin(c);
-    const int ierr = MPI_Reduce(local.data(),
-                                points_per_cell.data(),
-                                n_cells,
-                                MPI_UNSIGNED,
-                                MPI_SUM,
-                                0,
-                                comm);
-    AssertThrowMPI(ierr);
-    local = std::vector<unsigned int>();
+    const std::vector<unsigned int> points_per_cell
+      = DistributedPoints::points_per_cell_on_root(*grid,
+                                                   particles,
+                                                   false,
+                                                   comm);
     const std::vector<unsigned int> owners
       = DomainPartition<dim>::split(whole_grid ? *whole_grid : *grid,
                                     points_per_cell,

@@ -316,15 +316,15 @@ namespace fsgmpm
           }
         else
           {
-            std::vector<unsigned int> points_per_cell(grid->n_global_cells(),
-                                                      0);
-            for (const unsigned int c : particles.occupied_cells)
-              points_per_cell[c]
-                = particles.cell_end(c) - particles.cell_begin(c);
-            if (in.rows_split())
-              Utilities::MPI::sum(points_per_cell,
-                                  communicator,
-                                  points_per_cell);
+            // (From a checkpoint of an older version every process read
+            // all points: process 0's count.)
+            const ParticleStore<dim>        none;
+            const std::vector<unsigned int> points_per_cell
+              = DistributedPoints::points_per_cell_on_root(
+                *grid,
+                in.rows_split() || root ? particles : none,
+                true,
+                communicator);
             owners
               = DomainPartition<dim>::split(whole_grid ? *whole_grid : *grid,
                                             points_per_cell,

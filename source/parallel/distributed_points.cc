@@ -366,6 +366,31 @@ namespace fsgmpm
 
 
 
+    template <int dim>
+    std::vector<unsigned int>
+    points_per_cell_on_root(const BackgroundGrid<dim> &grid,
+                            const ParticleStore<dim>  &particles,
+                            const bool                 whole_numbers,
+                            const MPI_Comm            &comm)
+    {
+      std::vector<unsigned int> cells, counts;
+      cells.reserve(particles.occupied_cells.size());
+      counts.reserve(particles.occupied_cells.size());
+      for (const unsigned int c : particles.occupied_cells)
+        {
+          cells.push_back(whole_numbers ? c : grid.global_cell(c));
+          counts.push_back(particles.cell_end(c) - particles.cell_begin(c));
+        }
+      return Parallel::gather_to_root(cells,
+                                      counts,
+                                      grid.n_global_cells(),
+                                      comm,
+                                      [](unsigned int      &sum,
+                                         const unsigned int n) { sum += n; });
+    }
+
+
+
 #define FSGMPM_INSTANTIATE(dim)                                           \
   template void         add_ghosts<dim>(const DomainPartition<dim> &,     \
                                 ParticleStore<dim> &);            \
@@ -376,7 +401,12 @@ namespace fsgmpm
   template void         move_to_owners<dim>(const DomainPartition<dim> &, \
                                     ParticleStore<dim> &);        \
   template unsigned int global_size<dim>(const DomainPartition<dim> &,    \
-                                         const ParticleStore<dim> &);
+                                         const ParticleStore<dim> &);     \
+  template std::vector<unsigned int> points_per_cell_on_root<dim>(        \
+    const BackgroundGrid<dim> &,                                          \
+    const ParticleStore<dim> &,                                           \
+    const bool,                                                           \
+    const MPI_Comm &);
     FSGMPM_INSTANTIATE(2)
     FSGMPM_INSTANTIATE(3)
 #undef FSGMPM_INSTANTIATE

@@ -66,6 +66,21 @@ namespace fsgmpm
     move_to_owners(const DomainPartition<dim> &partition,
                    ParticleStore<dim>         &particles);
 
+    /**
+     * The points of every cell of the whole grid, summed over the
+     * processes, on process 0 (for METIS; empty elsewhere). Each process
+     * sends the counts of its occupied cells only, so none but process 0
+     * holds a whole-grid-sized array. The cells of @p particles are
+     * numbers in the whole grid if @p whole_numbers (a checkpoint's, or
+     * before a new window), else in @p grid. Collective.
+     */
+    template <int dim>
+    std::vector<unsigned int>
+    points_per_cell_on_root(const BackgroundGrid<dim> &grid,
+                            const ParticleStore<dim>  &particles,
+                            const bool                 whole_numbers,
+                            const MPI_Comm            &comm);
+
     /// The number of points over all processes.
     template <int dim>
     unsigned int

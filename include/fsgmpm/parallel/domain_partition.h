@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/parallel/gather_to_root.h>
 #include <fsgmpm/parallel/values_of_owners.h>
 
 #include <algorithm>
@@ -286,45 +287,11 @@ namespace fsgmpm
           index.push_back(grid.global_node(i));
           own_values.push_back(values[i]);
         }
-    const int        n = index.size();
-    std::vector<int> n_of(this_process == 0 ? n_processes : 0);
-    int ierr = MPI_Gather(&n, 1, MPI_INT, n_of.data(), 1, MPI_INT, 0, comm);
-    AssertThrowMPI(ierr);
-    std::vector<int> start(n_of.size() + 1, 0), byte_count, byte_start;
-    for (unsigned int q = 0; q < n_of.size(); ++q)
-      {
-        start[q + 1] = start[q] + n_of[q];
-        byte_count.push_back(n_of[q] * sizeof(T));
-        byte_start.push_back(start[q] * sizeof(T));
-      }
-    std::vector<unsigned int> all_index(start.back());
-    std::vector<T>            all_values(start.back());
-    ierr = MPI_Gatherv(index.data(),
-                       n,
-                       MPI_UNSIGNED,
-                       all_index.data(),
-                       n_of.data(),
-                       start.data(),
-                       MPI_UNSIGNED,
-                       0,
-                       comm);
-    AssertThrowMPI(ierr);
-    ierr = MPI_Gatherv(own_values.data(),
-                       n * sizeof(T),
-                       MPI_BYTE,
-                       all_values.data(),
-                       byte_count.data(),
-                       byte_start.data(),
-                       MPI_BYTE,
-                       0,
-                       comm);
-    AssertThrowMPI(ierr);
-    if (this_process != 0)
-      return {};
-    std::vector<T> result(grid.n_global_nodes());
-    for (unsigned int k = 0; k < all_index.size(); ++k)
-      result[all_index[k]] = all_values[k];
-    return result;
+    return Parallel::gather_to_root(index,
+                                    own_values,
+                                    grid.n_global_nodes(),
+                                    comm,
+                                    [](T &to, const T &value) { to = value; });
   }
 
 
