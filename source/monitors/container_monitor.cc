@@ -103,12 +103,12 @@ namespace fsgmpm
         const double   diagonal = box.get_boundary_points().first.distance(
           box.get_boundary_points().second);
         box.extend(1e-9 * diagonal);
+        const PolygonInside inside_test(poly);
         for (unsigned int p = 0; p < particles.size(); ++p)
           {
             const Point<2> x(particles.position[p][0],
                              particles.position[p][1]);
-            const bool     inside
-              = box.point_inside(x, 0.) && inside_polygon(poly, x);
+            const bool     inside = box.point_inside(x, 0.) && inside_test(x);
             if (particles.body_id[p] == container && !inside)
               {
                 ++soil_outside;

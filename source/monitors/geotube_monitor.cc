@@ -129,11 +129,11 @@ namespace fsgmpm
         std::vector<Point<2>> poly;
         for (const auto &x : membrane.ordered_nodes())
           poly.emplace_back(x[0], x[1]);
+        const PolygonInside inside(poly);
         for (unsigned int q = 0; q < particles.size(); ++q)
           if (particles.body_id[q] == fill_body)
-            outside += !inside_polygon(poly,
-                                       Point<2>(particles.position[q][0],
-                                                particles.position[q][1]));
+            outside += !inside(
+              Point<2>(particles.position[q][0], particles.position[q][1]));
         outside = Utilities::MPI::sum(outside, communicator);
       }
 

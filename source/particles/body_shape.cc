@@ -125,9 +125,10 @@ namespace fsgmpm
   } // namespace
 
   PolygonShape::PolygonShape(const std::vector<Point<2>> &v)
-    : vertices(v)
+    : inside_test(v)
   {
-    const unsigned int n = vertices.size();
+    const std::vector<Point<2>> &vertices = v;
+    const unsigned int           n        = vertices.size();
     AssertThrow(n >= 3, ExcMessage("A polygon needs at least three vertices."));
     double size = 0, twice_area = 0;
     for (unsigned int i = 0; i < n; ++i)
@@ -178,19 +179,20 @@ namespace fsgmpm
   bool
   PolygonShape::inside(const Point<2> &x) const
   {
-    return inside_polygon(vertices, x);
+    return inside_test(x);
   }
 
   std::vector<Point<2>>
   PolygonShape::outline_points() const
   {
-    return vertices;
+    return inside_test.get_vertices();
   }
 
   std::string
   PolygonShape::description() const
   {
-    return "polygon with " + std::to_string(vertices.size()) + " vertices";
+    return "polygon with " + std::to_string(inside_test.get_vertices().size())
+           + " vertices";
   }
 
   template <int dim>

@@ -9,7 +9,9 @@
 
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/mesh_generation.h>
+#include <fsgmpm/particles/body_shape.h>
 #include <fsgmpm/particles/point_locator.h>
+#include <fsgmpm/particles/polygon_inside.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -257,4 +259,68 @@ TEST(PointLocation, SlowRotationWalk)
           ++wrong;
       }
   EXPECT_EQ(wrong, 0u);
+}
+
+
+
+// PolygonInside (the fill of a membrane, the monitors' leak counts) gives
+// inside_polygon()'s answer for every point, on vertices, edges and at the
+// vertices' heights too (where the even-odd rule's ties are), for a
+// membrane-like loop of 4 600 vertices, a non-convex star, a staircase with
+// horizontal edges and a triangle.
+TEST(PolygonInside, SameAnswerAsInsidePolygon)
+{
+  std::mt19937                           rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Point<2>>>     polygons(4);
+  for (unsigned int i = 0; i < 4600; ++i)
+    {
+      const double t = 2 * M_PI * i / 4600;
+      polygons[0].emplace_back(3 + 1.6 * std::cos(t), 0.7 + 0.7 * std::sin(t));
+    }
+  for (unsigned int i = 0; i < 200; ++i)
+    {
+      const double t = 2 * M_PI * i / 200, r = 0.3 + u(rng);
+      polygons[1].emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+  for (unsigned int i = 0; i < 10; ++i)
+    {
+      polygons[2].emplace_back(i, i);
+      polygons[2].emplace_back(i + 1, i);
+    }
+  polygons[2].emplace_back(0, 10);
+  polygons[3] = {Point<2>(0, 0), Point<2>(1, 0), Point<2>(0.3, 0.8)};
+
+  for (const auto &v : polygons)
+    {
+      const PolygonInside inside(v);
+      double              x0 = v[0][0], x1 = x0, y0 = v[0][1], y1 = y0;
+      for (const auto &p : v)
+        {
+          x0 = std::min(x0, p[0]);
+          x1 = std::max(x1, p[0]);
+          y0 = std::min(y0, p[1]);
+          y1 = std::max(y1, p[1]);
+        }
+      std::vector<Point<2>> points;
+      for (unsigned int k = 0; k < 20000; ++k)
+        points.emplace_back(x0 - 0.1 * (x1 - x0) + 1.2 * (x1 - x0) * u(rng),
+                            y0 - 0.1 * (y1 - y0) + 1.2 * (y1 - y0) * u(rng));
+      for (unsigned int i = 0; i < v.size(); ++i)
+        {
+          points.push_back(v[i]);
+          points.push_back(0.5 * (v[i] + v[(i + 1) % v.size()]));
+          points.emplace_back(x0 + (x1 - x0) * u(rng), v[i][1]);
+        }
+      unsigned int n_in = 0;
+      for (const auto &x : points)
+        {
+          const bool expected = inside_polygon(v, x);
+          ASSERT_EQ(inside(x), expected) << "point " << x;
+          n_in += expected;
+        }
+      EXPECT_GT(n_in, points.size() / 10);
+      EXPECT_LT(n_in, points.size());
+      EXPECT_EQ(inside.get_vertices(), v);
+    }
 }

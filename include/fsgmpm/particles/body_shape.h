@@ -3,6 +3,8 @@
 
 #include <deal.II/base/point.h>
 
+#include <fsgmpm/particles/polygon_inside.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -87,7 +89,8 @@ namespace fsgmpm
     description() const override;
 
   private:
-    std::vector<Point<2>> vertices;
+    /// The vertices and the even-odd test's bands.
+    PolygonInside inside_test;
   };
 
   /// A simple closed polygon in x-y, extruded along z in 3D (over the
