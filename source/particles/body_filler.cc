@@ -124,12 +124,12 @@ namespace fsgmpm
     const std::string body_name
       = "Body " + std::to_string(body_id) + " (" + shape.description()
         + (shape.parameters.empty() ? "" : ", from " + shape.parameters);
-    // (A window is part of the mesh: the process that fills the whole
-    // grid checks the whole body.)
-    // The outline's points follow one another: each walk starts from the
-    // previous point's cell, and searches all cells only if it fails (the
-    // geotube at 1 cm, 422 400 cells: 11 s of its set-up when every point
-    // searched all cells). Round-off on the mesh boundary is allowed.
+    // The whole body lies in the mesh. The outline's points follow one
+    // another: each walk starts from the previous point's cell, and
+    // searches all cells only if it fails (the geotube at 1 cm, 422 400
+    // cells: 11 s of its set-up when every point searched all cells).
+    // Round-off on the mesh boundary is allowed. (A window is part of the
+    // mesh: the process that fills the whole grid checks the whole body.)
     const PointLocator<dim> locator(grid, 1e-9);
     unsigned int            previous = 0;
     if (!grid.is_window())
