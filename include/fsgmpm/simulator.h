@@ -94,8 +94,8 @@ namespace fsgmpm
     {
       return particles;
     }
-    /// The grid the step runs on: the whole grid, or in an MPI run of a
-    /// scene without a membrane this process's window of it.
+    /// The grid the step runs on: the whole grid, or in an MPI run this
+    /// process's window of it.
     const BackgroundGrid<dim> &
     get_grid() const
     {

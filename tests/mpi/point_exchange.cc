@@ -11,13 +11,13 @@
 // centre of each of its cells, with an id, mass, velocity and stress made
 // from the cell's index, so that every field can be checked on arrival.
 //
-// And BackgroundGrid::broadcast: the grid process 0 built, on every process.
 // And BackgroundGrid::window: the part of the grid a process needs (its
 // cells and their ghost layer, numbered on its own) gives every node of its
 // own cells the whole grid's sums bit for bit, in 2D and 3D; its partition
 // and the points' exchange between windows agree with the whole grid's.
 // And a run (Simulator) holds its window from the first partition on, through
-// repartitions; a scene with a membrane keeps the whole grid.
+// repartitions, a scene with a membrane too (its nodes' cells agree on every
+// process). DomainPartition::all_window_cells gives every window in one pass.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>

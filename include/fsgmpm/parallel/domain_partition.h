@@ -41,8 +41,8 @@ namespace fsgmpm
    * (BackgroundGrid::window(), window_cells()): the owners stay an array
    * over the whole grid (4 B per cell), the rest comes from the cells the
    * grid holds, and a rim node is asked of one of its owners once per
-   * partition (doc/mpi.md, "Grid windows"). A run without a membrane holds
-   * its window after the first partition; process 0 keeps the whole grid
+   * partition (doc/mpi.md, "Grid windows"). An MPI run holds its window
+   * after the first partition; process 0 keeps the whole grid
    * besides, for METIS and the grid's output.
    * With multi-field contact the copies of a cell in the
    * other velocity fields belong to the base cell's owner; a membrane is
