@@ -368,12 +368,10 @@ namespace fsgmpm
 
   template <int dim>
   unsigned int
-  Membrane<dim>::split_long_elements(const double       max_length,
-                                     const unsigned int unknown_cell)
+  Membrane<dim>::split_long_elements(const double max_length)
   {
     if constexpr (dim == 3)
       {
-        (void)unknown_cell;
         unsigned int n_long = 0;
         for (unsigned int e = 0; e < elements.size(); ++e)
           for (unsigned int k = 0; k < 3; ++k)
@@ -405,11 +403,14 @@ namespace fsgmpm
             const unsigned int v0 = fe_cells[c][0], v1 = fe_cells[c][1];
             const unsigned int a = elements[e][0],
                                b = elements[e + per_cell - 1][1];
+            // A new node lies within the element's length of node a: its
+            // cell is where the location's walk starts.
+            const unsigned int cell_of_a = cell[a];
             auto add_node = [&](const Point<dim> &x, const Tensor<1, dim> &v) {
               position.push_back(x);
               velocity.push_back(v);
               force.push_back(Tensor<1, dim>());
-              cell.push_back(unknown_cell);
+              cell.push_back(cell_of_a);
               return static_cast<unsigned int>(position.size() - 1);
             };
             // The new rest vertex at the middle of the rest cell; the cell

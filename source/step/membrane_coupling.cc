@@ -284,7 +284,7 @@ namespace fsgmpm
           MembraneSlip::relax_tangential_forces(membrane);
       }
     if (split_length > 0)
-      membrane.split_long_elements(split_length, unknown);
+      membrane.split_long_elements(split_length);
     unsigned int outside = 0;
     if (grid.is_window())
       outside = locate_on_windows();
@@ -293,8 +293,8 @@ namespace fsgmpm
         const PointLocator<dim> locator(grid);
         for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
           {
-            // New nodes start the walk from cell 0 (rare: only after a
-            // split).
+            // (A split's new nodes start from their element's first node's
+            // cell; a cell is unknown only if the caller left it so.)
             const unsigned int guess
               = membrane.cell[a] == unknown ? 0 : membrane.cell[a];
             const unsigned int c = locator.locate(membrane.position[a], guess);
@@ -341,8 +341,8 @@ namespace fsgmpm
       MPI_IN_PLACE, found.data(), n, MPI_UNSIGNED, MPI_MIN, comm);
     AssertThrowMPI(ierr);
 
-    // 2. The nodes no walk placed (new nodes after a split, walks out of
-    // the mesh or across every window's edge): the whole grid's search,
+    // 2. The nodes no walk placed (walks out of the mesh or across every
+    // window's edge, a node without a cell): the whole grid's search,
     // over the windows. Each process's best cell (the largest smallest
     // barycentric coordinate, the lowest number on a tie) and MAXLOC's
     // tie rule (the lower index) give the whole grid's answer. The

@@ -122,8 +122,13 @@ for scene in "${scenes[@]}"; do
 done
 if [ $all_cases = 1 ]; then
   # The coarse geotube (16 cm cells, as the geotube_coarse test): membrane,
-  # slip and splitting, kinetic damping, ground.
+  # slip, kinetic damping, ground (no element is split in these steps).
   run_case geotube_A6.45 geotube_A6.45 --set "Grid/Cell size=0.16"
+  # Splitting: elements of 0.46 cells split at 0.46 cells, so the membrane
+  # goes from 125 to 250 nodes in 200 steps; the new nodes are located on
+  # windows by all processes together.
+  run_case geotube_splitting geotube_A6.45 --set "Grid/Cell size=0.16" \
+    --set "Membrane/Element size=0.0736" --set "Membrane/Split length=0.46"
   # The nodal stress projection (its projected stresses and velocity
   # gradients on the rim nodes), grid output (each node from the process
   # that counts it) and HDF5 + XDMF output (points and membrane; 16 cm

@@ -840,8 +840,9 @@ TEST(SimulatorWindow, ARunHoldsItsWindowThroughRepartitions)
 // A membrane scene runs on windows too (the coarse geotube, 3 processes):
 // every membrane node has one cell, the same whole-grid number on every
 // process, and lies in it wherever a window holds that cell. Nodes whose
-// cell is unknown (as a split's new nodes) are found by the search over
-// all windows. (mpi_reproduces_serial compares the runs with serial ones.)
+// cell is unknown (walks that all leave their windows end the same way) are
+// found by the search over all windows. (mpi_reproduces_serial compares the
+// runs with serial ones.)
 TEST(SimulatorWindow, AMembraneSceneRunsOnWindows)
 {
   auto prm = test_tools::make_parameters_from_scene("geotube_A6.45.prm");
@@ -882,7 +883,7 @@ TEST(SimulatorWindow, AMembraneSceneRunsOnWindows)
     ASSERT_TRUE(sim.advance());
   expect_cells_agree();
 
-  // Forget every third node's cell, as a split's new nodes have none.
+  // Forget every third node's cell: the search must find them.
   auto &membrane = const_cast<Membrane<2> &>(*sim.get_membrane());
   for (unsigned int a = 0; a < membrane.n_nodes(); a += 3)
     membrane.cell[a] = BackgroundGrid<2>::invalid;

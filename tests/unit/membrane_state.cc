@@ -93,7 +93,7 @@ TEST(MembraneState, SplittingKeepsMassRestLengthAndTension)
     x *= 1.3;
   m.compute_forces();
   const double       tension0 = m.tension[0];
-  const unsigned int n_new    = m.split_long_elements(0.2, 0);
+  const unsigned int n_new    = m.split_long_elements(0.2);
   m.compute_forces();
   std::printf("measured: %u new nodes, longest cable %.4f, mass change %.2e, "
               "rest length change %.2e, tension %.6f -> [%.6f, %.6f]\n",
@@ -597,7 +597,7 @@ TEST(MembraneState, DegreeTwoRingStructureStretchAndSplit)
   m.position[b] += 0.2 * chord;
   const Point<2> x0 = m.position[a], xm = m.position[mid], x2 = m.position[b];
   const double   mass_before = total(m.mass);
-  const unsigned int added   = m.split_long_elements(0.55 * chord.norm(), 0);
+  const unsigned int added   = m.split_long_elements(0.55 * chord.norm());
   EXPECT_EQ(added, 2u);
   EXPECT_EQ(m.n_nodes(), 2 * n + 2);
   EXPECT_EQ(m.n_elements(), 2 * n + 2);

@@ -123,12 +123,12 @@ namespace fsgmpm
     /// unchanged), so the fluid cannot leak between nodes. The new support
     /// points take the cell's interpolated position and velocity (the
     /// midpoint at degree 1, the quadratic at degree 2); the lumped masses
-    /// are recomputed. Returns the number of new nodes; their cell is set to
-    /// @p unknown_cell. 3D: returns the number of elements with an edge
-    /// longer than max_length (not split).
+    /// are recomputed. Returns the number of new nodes; their cell is that
+    /// of the element's first node (near them: the location walks from
+    /// there, MembraneCoupling::relocate()). 3D: returns the number of
+    /// elements with an edge longer than max_length (not split).
     unsigned int
-    split_long_elements(const double       max_length,
-                        const unsigned int unknown_cell);
+    split_long_elements(const double max_length);
 
     /// Length and signed x-y area (positive counter-clockwise) of a closed
     /// loop of nodes.
