@@ -840,9 +840,9 @@ TEST(SimulatorWindow, ARunHoldsItsWindowThroughRepartitions)
 // A membrane scene runs on windows too (the coarse geotube, 3 processes):
 // every membrane node has one cell, the same whole-grid number on every
 // process, and lies in it wherever a window holds that cell. Nodes whose
-// cell is unknown (walks that all leave their windows end the same way) are
-// found by the search over all windows. (mpi_reproduces_serial compares the
-// runs with serial ones.)
+// cell is unknown (as when every walk leaves its window) are found by the
+// search over all windows. (mpi_reproduces_serial compares the runs with
+// serial ones.)
 TEST(SimulatorWindow, AMembraneSceneRunsOnWindows)
 {
   auto prm = test_tools::make_parameters_from_scene("geotube_A6.45.prm");
