@@ -120,9 +120,8 @@ namespace fsgmpm
     // grid and sends each process its window once the cells are split
     // (setup_bodies()). An error on process 0 stops every process
     // (main()).
-    const bool several = Parallel::n_processes(MPI_COMM_WORLD) > 1;
-    root    = !several || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    windows = several;
+    root
+      = !on_windows() || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     if (root)
       {
         Triangulation<dim> triangulation;
@@ -205,7 +204,7 @@ namespace fsgmpm
     if (root)
       h_and_z = {cell_size(),
                  {grid->lower_corner[dim - 1], grid->upper_corner[dim - 1]}};
-    if (windows)
+    if (on_windows())
       h_and_z = Utilities::MPI::broadcast(MPI_COMM_WORLD, h_and_z, 0);
     setup_membrane(prm, h_and_z.first, h_and_z.second);
     setup_bodies();
@@ -467,7 +466,7 @@ namespace fsgmpm
                                      "Polygon vertices) or enlarge the grid."));
           }
       }
-    if (windows)
+    if (on_windows())
       Parallel::broadcast_vector(membrane->cell, MPI_COMM_WORLD, 0);
     AssertThrow(membrane->max_element_length()
                     <= membrane_split_length * (1 + 1e-9)
@@ -505,7 +504,7 @@ namespace fsgmpm
         const std::vector<std::uint8_t> store_none(grid->n_base_cells(), 0);
         fill_bodies(&store_none,
                     &points_per_cell,
-                    windows ? &first_ids : nullptr);
+                    on_windows() ? &first_ids : nullptr);
       }
     const unsigned int        n_points = particles.next_id;
     std::vector<std::uint8_t> mine; // empty: keep every point (serial)
@@ -537,7 +536,7 @@ namespace fsgmpm
     particles.reserve(n_kept);
     fill_bodies(mine.empty() ? nullptr : &mine,
                 nullptr,
-                windows ? &first_ids : nullptr);
+                on_windows() ? &first_ids : nullptr);
     // On a window the fill ends at the last cell it holds: the next point
     // added (none yet) gets the id after the serial fill's last.
     if (!owners.empty())
@@ -566,7 +565,7 @@ namespace fsgmpm
     // METIS's.)
     if (grid->n_cells() > 0)
       DomainPartition<dim>::check_owners(*grid, owners, n_ranks);
-    Assert(windows, ExcInternalError());
+    Assert(on_windows(), ExcInternalError());
     if (root && !whole_grid)
       whole_grid = std::make_unique<BackgroundGrid<dim>>(std::move(*grid));
     // In place: the step and the constraints refer to *grid.

@@ -12,6 +12,7 @@
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/monitors/scene_monitors.h>
 #include <fsgmpm/parallel/domain_partition.h>
+#include <fsgmpm/parallel/process_count.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/monitors.h>
@@ -348,7 +349,11 @@ namespace fsgmpm
     bool                                  root = true;
     /// MPI (more than one process): each process holds its window of the
     /// grid, process 0 the whole grid besides (adopt_owners()).
-    bool windows = false;
+    static bool
+    on_windows()
+    {
+      return Parallel::n_processes(MPI_COMM_WORLD) > 1;
+    }
     /// MPI statistics for summary.json: repartitions so far, the ghost
     /// points of the last step (this process's ratio to its owned points;
     /// write_summary() takes the largest) and the last max/mean points per

@@ -168,9 +168,7 @@ namespace fsgmpm
     const unsigned int n  = vertices.size();
     for (unsigned int i = 0, j = n - 1; i < n; j = i++)
       {
-        const Point<2> &a = vertices[i], &b = vertices[j];
-        if ((a[1] > x[1]) != (b[1] > x[1])
-            && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0])
+        if (edge_crosses_ray(vertices[i], vertices[j], x))
           in = !in;
       }
     return in;

@@ -76,10 +76,7 @@ namespace fsgmpm
     for (unsigned int e = band_start[k]; e < band_start[k + 1]; ++e)
       {
         const unsigned int i = band_edges[e], j = i == 0 ? n - 1 : i - 1;
-        const Point<2>    &a = vertices[i], &b = vertices[j];
-        // inside_polygon()'s test of edge (i, j), term for term.
-        if ((a[1] > x[1]) != (b[1] > x[1])
-            && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0])
+        if (edge_crosses_ray(vertices[i], vertices[j], x))
           in = !in;
       }
     return in;

@@ -45,13 +45,9 @@ namespace fsgmpm
            const CellGeometry<dim> &guess_geometry) const
     {
       const unsigned int c = walk(x, guess, guess_geometry, true);
-      if (c != BackgroundGrid<dim>::invalid)
-        return c;
-      // The walk stays in the guess's velocity field; so does the search.
-      const unsigned int found = grid.find_cell_brute_force(x, tolerance);
-      return found == BackgroundGrid<dim>::invalid
-               ? found
-               : grid.cell_in_field(found, grid.field_of_cell(guess));
+      return c != BackgroundGrid<dim>::invalid
+               ? c
+               : search(x, guess, BackgroundGrid<dim>::invalid);
     }
 
     /// locate(x, guess)'s answer, found faster where the walk from @p guess
@@ -67,16 +63,9 @@ namespace fsgmpm
            const unsigned int hint) const
     {
       const unsigned int c = walk(x, guess, grid.geometry(guess), true);
-      if (c != BackgroundGrid<dim>::invalid)
-        return c;
-      const unsigned int near = walk(x, hint);
-      const unsigned int found
-        = near == BackgroundGrid<dim>::invalid
-            ? grid.find_cell_brute_force(x, tolerance)
-            : grid.best_cell_around(x, tolerance, grid.cell_in_field(near, 0));
-      return found == BackgroundGrid<dim>::invalid
-               ? found
-               : grid.cell_in_field(found, grid.field_of_cell(guess));
+      return c != BackgroundGrid<dim>::invalid
+               ? c
+               : search(x, guess, walk(x, hint));
     }
 
     /// The walk of locate() alone: the cell it settles in, or invalid if
@@ -94,6 +83,24 @@ namespace fsgmpm
   private:
     const BackgroundGrid<dim> &grid;
     const double               tolerance;
+
+    /// locate()'s search after a walk from @p guess that did not settle:
+    /// of all cells, or (if @p near, a cell that holds x, is valid) of the
+    /// cells around @p near, which gives the same cell. The walk stays in
+    /// the guess's velocity field; so does the search.
+    unsigned int
+    search(const Point<dim>  &x,
+           const unsigned int guess,
+           const unsigned int near) const
+    {
+      const unsigned int found
+        = near == BackgroundGrid<dim>::invalid
+            ? grid.find_cell_brute_force(x, tolerance)
+            : grid.best_cell_around(x, tolerance, grid.cell_in_field(near, 0));
+      return found == BackgroundGrid<dim>::invalid
+               ? found
+               : grid.cell_in_field(found, grid.field_of_cell(guess));
+    }
 
     /// The walk from @p guess across the face with the most negative
     /// barycentric coordinate. If @p stop_beyond_window, a walk out through
