@@ -115,22 +115,22 @@ namespace fsgmpm
     bodies = BodyDescription<dim>::parse_bodies(prm);
 
     // MPI: process 0 builds the grid from the mesh, which no other
-    // process ever holds (its creation is the peak of a process's memory).
-    // The run is on windows of the grid: process 0 alone holds the whole
-    // grid and sends each process its window once the cells are split
-    // (setup_bodies()). An error on process 0 stops every process
-    // (main()).
+    // process ever holds. The run is on windows of the grid: process 0
+    // alone holds the whole grid and sends each process its window once
+    // the cells are split (setup_bodies()). An error on process 0 stops
+    // every process (main()).
     root
       = !on_windows() || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    if (root)
+    if (root && params.grid_type == "box")
+      // A box's grid straight from its vertices and cells: creating
+      // deal.II's Triangulation of it was the peak of the run's memory.
+      grid
+        = std::make_unique<BackgroundGrid<dim>>(MeshGeneration::box_simplices(
+          params.lower_corner, params.upper_corner, params.subdivisions));
+    else if (root)
       {
         Triangulation<dim> triangulation;
-        if (params.grid_type == "box")
-          MeshGeneration::make_box(params.lower_corner,
-                                   params.upper_corner,
-                                   params.subdivisions,
-                                   triangulation);
-        else if (params.grid_type == "extruded box")
+        if (params.grid_type == "extruded box")
           {
             if constexpr (dim == 3)
               {
@@ -185,7 +185,10 @@ namespace fsgmpm
                                                     params.walls,
                                                     params.moving_wall);
       }
-    nodes.resize(grid->n_nodes());
+    // On windows the nodal fields are sized for the window (adopt_owners()):
+    // process 0's whole grid never gets them.
+    if (!on_windows())
+      nodes.resize(grid->n_nodes());
 
     const auto cell_size = [this]() {
       Point<dim> h;

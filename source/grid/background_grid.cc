@@ -33,7 +33,62 @@ namespace fsgmpm
       dof_handler.distribute_dofs(fe);
       compute_cell_data(dof_handler);
     }
+    check_cells();
     compute_neighbors();
+    compute_colouring();
+  }
+
+
+
+  template <int dim>
+  BackgroundGrid<dim>::BackgroundGrid(
+    const MeshGeneration::SimplexMesh<dim> &mesh)
+  {
+    AssertThrow(!mesh.cells.empty(),
+                ExcMessage("The background grid has no cells."));
+    // The nodes are numbered as a DoFHandler numbers the degrees of
+    // freedom of FE_SimplexP<dim>(1) on the mesh: by first appearance, cell
+    // by cell, vertex by vertex (the numbers of the constructor above;
+    // tested).
+    std::vector<unsigned int> node_of_vertex(mesh.vertices.size(), invalid);
+    cell_nodes.resize(mesh.cells.size());
+    unsigned int n = 0;
+    for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          const unsigned int vertex = mesh.cells[c][v];
+          AssertThrow(vertex < mesh.vertices.size(),
+                      ExcMessage("Cell " + std::to_string(c)
+                                 + " of the background grid names vertex "
+                                 + std::to_string(vertex) + " of "
+                                 + std::to_string(mesh.vertices.size()) + "."));
+          if (node_of_vertex[vertex] == invalid)
+            node_of_vertex[vertex] = n++;
+          cell_nodes[c][v] = node_of_vertex[vertex];
+        }
+    node_positions.resize(n);
+    for (unsigned int vertex = 0; vertex < mesh.vertices.size(); ++vertex)
+      if (node_of_vertex[vertex] != invalid)
+        node_positions[node_of_vertex[vertex]] = mesh.vertices[vertex];
+    check_cells();
+    compute_neighbors();
+    // A face without a neighbour is on the boundary, with the id of the
+    // bounding box's plane it lies on (make_box()'s colorize rule).
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      for (unsigned int k = 0; k < n_vertices; ++k)
+        if (cell_neighbors[c][k] == invalid)
+          {
+            Point<dim> center;
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              if (v != k)
+                center += node_positions[cell_nodes[c][v]];
+            center /= dim;
+            boundary_faces.push_back(
+              {c,
+               k,
+               MeshGeneration::bounding_box_id(
+                 center, lower_corner, upper_corner, 0)});
+          }
     compute_colouring();
   }
 
@@ -48,14 +103,6 @@ namespace fsgmpm
     boundary_faces.clear();
     node_positions.resize(dof_handler.n_dofs());
 
-    min_altitude_global = std::numeric_limits<double>::max();
-    max_altitude_global = 0;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower_corner[d] = std::numeric_limits<double>::max();
-        upper_corner[d] = -std::numeric_limits<double>::max();
-      }
-
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c = cell->active_cell_index();
@@ -66,33 +113,7 @@ namespace fsgmpm
             const unsigned int node = cell->vertex_dof_index(v, 0);
             cell_nodes[c][v]        = node;
             node_positions[node]    = cell->vertex(v);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                lower_corner[d] = std::min(lower_corner[d], cell->vertex(v)[d]);
-                upper_corner[d] = std::max(upper_corner[d], cell->vertex(v)[d]);
-              }
           }
-
-        // A degenerate cell has no inverse edge matrix: refuse it here,
-        // once, so that no loop meets it.
-        Tensor<2, dim>   edges;
-        const Point<dim> x0    = cell->vertex(0);
-        double           scale = 1;
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              edges[d][k] = cell->vertex(k + 1)[d] - x0[d];
-            scale *= (cell->vertex(k + 1) - x0).norm();
-          }
-        AssertThrow(std::abs(determinant(edges)) > 1e-12 * scale,
-                    ExcMessage("Background-grid cell " + std::to_string(c)
-                               + " near "
-                               + Utilities::to_string(cell->center()[0])
-                               + " is degenerate (zero volume)."));
-
-        const double hmin   = min_altitude(c);
-        min_altitude_global = std::min(min_altitude_global, hmin);
-        max_altitude_global = std::max(max_altitude_global, hmin);
 
         // Boundary ids, by the local vertex opposite the face.
         for (unsigned int f = 0; f < cell->n_faces(); ++f)
@@ -122,6 +143,53 @@ namespace fsgmpm
                 return std::make_pair(a.cell, a.vertex)
                        < std::make_pair(b.cell, b.vertex);
               });
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::check_cells()
+  {
+    min_altitude_global = std::numeric_limits<double>::max();
+    max_altitude_global = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower_corner[d] = std::numeric_limits<double>::max();
+        upper_corner[d] = -std::numeric_limits<double>::max();
+      }
+    for (const Point<dim> &x : node_positions)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower_corner[d] = std::min(lower_corner[d], x[d]);
+          upper_corner[d] = std::max(upper_corner[d], x[d]);
+        }
+
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      {
+        // A degenerate cell has no inverse edge matrix: refuse it here,
+        // once, so that no loop meets it.
+        const auto     x = vertices(c);
+        Tensor<2, dim> edges;
+        double         scale = 1;
+        Point<dim>     center;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              edges[d][k] = x[k + 1][d] - x[0][d];
+            scale *= (x[k + 1] - x[0]).norm();
+          }
+        for (const Point<dim> &v : x)
+          center += v / n_vertices;
+        AssertThrow(std::abs(determinant(edges)) > 1e-12 * scale,
+                    ExcMessage("Background-grid cell " + std::to_string(c)
+                               + " near " + Utilities::to_string(center[0])
+                               + " is degenerate (zero volume)."));
+
+        const double hmin   = min_altitude(c);
+        min_altitude_global = std::min(min_altitude_global, hmin);
+        max_altitude_global = std::max(max_altitude_global, hmin);
+      }
   }
 
 

@@ -9,7 +9,9 @@
 #include <fsgmpm/io/gmsh_reader.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -17,6 +19,31 @@ namespace fsgmpm
 {
   namespace MeshGeneration
   {
+    namespace
+    {
+      template <int dim>
+      void
+      check_box(const Point<dim>                &lower,
+                const Point<dim>                &upper,
+                const std::vector<unsigned int> &subdivisions)
+      {
+        AssertThrow(subdivisions.size() == dim,
+                    ExcMessage("Grid/Subdivisions needs one entry per "
+                               "coordinate direction ("
+                               + std::to_string(dim) + ")."));
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            AssertThrow(upper[d] > lower[d],
+                        ExcMessage("Grid/Upper corner must be larger than "
+                                   "Grid/Lower corner in every direction."));
+            AssertThrow(subdivisions[d] > 0,
+                        ExcMessage("Grid/Subdivisions must be positive."));
+          }
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     make_box(const Point<dim>                &lower,
@@ -24,23 +51,111 @@ namespace fsgmpm
              const std::vector<unsigned int> &subdivisions,
              Triangulation<dim>              &triangulation)
     {
-      AssertThrow(subdivisions.size() == dim,
-                  ExcMessage("Grid/Subdivisions needs one entry per "
-                             "coordinate direction ("
-                             + std::to_string(dim) + ")."));
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          AssertThrow(upper[d] > lower[d],
-                      ExcMessage("Grid/Upper corner must be larger than "
-                                 "Grid/Lower corner in every direction."));
-          AssertThrow(subdivisions[d] > 0,
-                      ExcMessage("Grid/Subdivisions must be positive."));
-        }
+      check_box(lower, upper, subdivisions);
       GridGenerator::subdivided_hyper_rectangle_with_simplices(triangulation,
                                                                subdivisions,
                                                                lower,
                                                                upper);
       colorize_bounding_box(triangulation);
+    }
+
+
+
+    template <int dim>
+    SimplexMesh<dim>
+    box_simplices(const Point<dim>                &lower,
+                  const Point<dim>                &upper,
+                  const std::vector<unsigned int> &subdivisions)
+    {
+      check_box(lower, upper, subdivisions);
+      // The cells are numbered by unsigned int, as deal.II's: refuse a box
+      // that would overflow them rather than wrap around.
+      std::uint64_t n_boxes = 1, n_vertices = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          n_boxes *= subdivisions[d];
+          n_vertices *= subdivisions[d] + 1;
+        }
+      const unsigned int per_box = (dim == 2 ? 2 : 5);
+      AssertThrow(n_boxes * per_box < std::numeric_limits<unsigned int>::max()
+                    && n_vertices < std::numeric_limits<unsigned int>::max(),
+                  ExcMessage("Grid/Subdivisions give more than 2^32 - 1 "
+                             "cells or vertices; use a coarser grid."));
+
+      // deal.II 9.4's subdivided_hyper_rectangle_with_simplices(), step by
+      // step: the same spacing, vertex order and cell patterns.
+      Tensor<1, dim> dx;
+      for (unsigned int d = 0; d < dim; ++d)
+        dx[d] = (upper[d] - lower[d]) / subdivisions[d];
+      // Vertices per row and per column; layers of boxes (1 in 2D).
+      const unsigned int nx = subdivisions[0] + 1, ny = subdivisions[1] + 1;
+      const unsigned int n_layers = (dim == 3 ? subdivisions[dim - 1] : 1);
+
+      SimplexMesh<dim> mesh;
+      mesh.vertices.reserve(n_vertices);
+      mesh.cells.reserve(n_boxes * per_box);
+      for (unsigned int k = 0; k < n_layers + (dim == 3); ++k)
+        for (unsigned int j = 0; j < ny; ++j)
+          for (unsigned int i = 0; i < nx; ++i)
+            {
+              Point<dim> x;
+              x[0] = lower[0] + dx[0] * i;
+              x[1] = lower[1] + dx[1] * j;
+              if constexpr (dim == 3)
+                x[2] = lower[2] + dx[2] * k;
+              mesh.vertices.push_back(x);
+            }
+
+      for (unsigned int k = 0; k < n_layers; ++k)
+        for (unsigned int j = 0; j + 1 < ny; ++j)
+          for (unsigned int i = 0; i + 1 < nx; ++i)
+            {
+              // The box's corners, x fastest, then y, then z.
+              std::array<unsigned int, 8> q;
+              for (unsigned int c = 0; c < (1u << dim); ++c)
+                q[c] = ((k + (c >> 2)) * ny + j + ((c >> 1) & 1)) * nx + i
+                       + (c & 1);
+              if constexpr (dim == 2)
+                {
+                  mesh.cells.push_back({{q[0], q[1], q[2]}});
+                  mesh.cells.push_back({{q[3], q[2], q[1]}});
+                }
+              else if ((i + j + k) % 2 == 0)
+                {
+                  mesh.cells.push_back({{q[0], q[1], q[2], q[4]}});
+                  mesh.cells.push_back({{q[2], q[1], q[3], q[7]}});
+                  mesh.cells.push_back({{q[1], q[4], q[5], q[7]}});
+                  mesh.cells.push_back({{q[2], q[4], q[7], q[6]}});
+                  mesh.cells.push_back({{q[1], q[2], q[4], q[7]}});
+                }
+              else
+                {
+                  mesh.cells.push_back({{q[0], q[1], q[3], q[5]}});
+                  mesh.cells.push_back({{q[0], q[3], q[2], q[6]}});
+                  mesh.cells.push_back({{q[0], q[4], q[5], q[6]}});
+                  mesh.cells.push_back({{q[3], q[5], q[7], q[6]}});
+                  mesh.cells.push_back({{q[0], q[3], q[6], q[5]}});
+                }
+            }
+      return mesh;
+    }
+
+
+
+    template <int dim>
+    types::boundary_id
+    bounding_box_id(const Point<dim>  &center,
+                    const Point<dim>  &lower,
+                    const Point<dim>  &upper,
+                    types::boundary_id id)
+    {
+      const double size = lower.distance(upper);
+      for (unsigned int d = 0; d < dim; ++d)
+        if (std::abs(center[d] - lower[d]) < 1e-10 * size)
+          id = 2 * d;
+        else if (std::abs(center[d] - upper[d]) < 1e-10 * size)
+          id = 2 * d + 1;
+      return id;
     }
 
 
@@ -155,23 +270,14 @@ namespace fsgmpm
     void
     colorize_bounding_box(Triangulation<dim> &triangulation)
     {
-      const auto   box  = GridTools::compute_bounding_box(triangulation);
-      const auto   lo   = box.get_boundary_points().first;
-      const auto   hi   = box.get_boundary_points().second;
-      const double size = lo.distance(hi);
+      const auto box = GridTools::compute_bounding_box(triangulation);
+      const auto lo  = box.get_boundary_points().first;
+      const auto hi  = box.get_boundary_points().second;
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
-            {
-              const auto c = cell->face(f)->center();
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  if (std::abs(c[d] - lo[d]) < 1e-10 * size)
-                    cell->face(f)->set_boundary_id(2 * d);
-                  else if (std::abs(c[d] - hi[d]) < 1e-10 * size)
-                    cell->face(f)->set_boundary_id(2 * d + 1);
-                }
-            }
+            cell->face(f)->set_boundary_id(bounding_box_id(
+              cell->face(f)->center(), lo, hi, cell->face(f)->boundary_id()));
     }
 
     template void
@@ -184,6 +290,24 @@ namespace fsgmpm
                 const Point<3> &,
                 const std::vector<unsigned int> &,
                 Triangulation<3> &);
+    template SimplexMesh<2>
+    box_simplices<2>(const Point<2> &,
+                     const Point<2> &,
+                     const std::vector<unsigned int> &);
+    template SimplexMesh<3>
+    box_simplices<3>(const Point<3> &,
+                     const Point<3> &,
+                     const std::vector<unsigned int> &);
+    template types::boundary_id
+    bounding_box_id<2>(const Point<2> &,
+                       const Point<2> &,
+                       const Point<2> &,
+                       types::boundary_id);
+    template types::boundary_id
+    bounding_box_id<3>(const Point<3> &,
+                       const Point<3> &,
+                       const Point<3> &,
+                       types::boundary_id);
     template void
     read_gmsh<2>(const std::string &, Triangulation<2> &);
     template void

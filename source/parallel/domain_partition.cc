@@ -1,10 +1,10 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-
 #include <fsgmpm/parallel/domain_partition.h>
 
+#include <metis.h>
+
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -65,32 +65,8 @@ namespace fsgmpm
             std::vector<unsigned int> weights(n_base, 1);
             for (unsigned int c = 0; c < n_cells; ++c)
               weights[c % n_base] += 64 * points_per_cell[c];
-            // What GridTools::partition_triangulation does (METIS on the
-            // face graph of the cells), without the copy of the mesh it
-            // would need to set subdomain ids on: the graph is the one
-            // GridTools::get_face_connectivity_of_cells builds (each cell
-            // with itself and its face neighbours, deal.II 9.4
-            // grid_tools.cc:3732-3758), from the grid's own neighbours.
-            DynamicSparsityPattern connectivity(n_base, n_base);
-            for (unsigned int c = 0; c < n_base; ++c)
-              {
-                connectivity.add(c, c);
-                for (const unsigned int neighbor : grid.cell_neighbors[c])
-                  if (neighbor != BackgroundGrid<dim>::invalid)
-                    {
-                      connectivity.add(c, neighbor);
-                      connectivity.add(neighbor, c);
-                    }
-              }
-            SparsityPattern graph;
-            graph.copy_from(connectivity);
-            connectivity.reinit(0, 0);
-            std::vector<unsigned int> base_owner(n_base);
-            SparsityTools::partition(graph,
-                                     weights,
-                                     n_processes,
-                                     base_owner,
-                                     SparsityTools::Partitioner::metis);
+            const std::vector<unsigned int> base_owner
+              = metis_split(grid, weights, n_processes);
             for (unsigned int c = 0; c < n_base; ++c)
               for (unsigned int f = 0; f < grid.n_velocity_fields(); ++f)
                 cell_owner[grid.cell_in_field(c, f)] = base_owner[c];
@@ -100,6 +76,80 @@ namespace fsgmpm
         AssertThrowMPI(ierr);
       }
     return cell_owner;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  DomainPartition<dim>::metis_split(const BackgroundGrid<dim>       &grid,
+                                    const std::vector<unsigned int> &weights,
+                                    const unsigned int               n_parts)
+  {
+    const unsigned int n_base = grid.n_base_cells();
+    AssertThrow(weights.size() == n_base && n_parts > 0, ExcInternalError());
+    AssertThrow(grid.n_cells() < std::size_t(1) << 31,
+                ExcMessage("METIS numbers the cells by int: the grid has "
+                           "more than 2^31 - 1 cells."));
+    // What GridTools::partition_triangulation does: METIS on the face graph
+    // of the cells, the rows of the SparsityPattern that
+    // GridTools::get_face_connectivity_of_cells builds (each cell with
+    // itself first, then its face neighbours in ascending order; deal.II
+    // 9.4 grid_tools.cc:3732-3758), called as SparsityTools::partition
+    // calls it (sparsity_tools.cc, partition_metis). Built straight from the
+    // grid's neighbours, the graph costs 4 B per entry once, where deal.II's
+    // pattern and its copy to METIS's integers held 28 B (the start's
+    // peak of memory on process 0). The same owners (tested).
+    std::vector<idx_t> xadj(n_base + 1, 0), adjncy;
+    adjncy.reserve(std::size_t(n_base) * (dim + 2));
+    for (unsigned int c = 0; c < n_base; ++c)
+      {
+        std::array<unsigned int, dim + 1> neighbors = grid.cell_neighbors[c];
+        std::sort(neighbors.begin(), neighbors.end());
+        adjncy.push_back(c);
+        for (unsigned int k = 0; k < neighbors.size(); ++k)
+          if (neighbors[k] != BackgroundGrid<dim>::invalid && neighbors[k] != c
+              && (k == 0 || neighbors[k] != neighbors[k - 1]))
+            adjncy.push_back(neighbors[k]);
+        xadj[c + 1] = adjncy.size();
+      }
+    // METIS sums the weights in int: a run whose weights would overflow
+    // it has them divided by a common factor (a few points per cell lost
+    // in the rounding, against 10^8 or more in all).
+    std::uint64_t total = 0;
+    for (const unsigned int w : weights)
+      total += w;
+    const std::uint64_t max_total = std::numeric_limits<idx_t>::max() / 2;
+    const std::uint64_t factor    = total / max_total + 1;
+    std::vector<idx_t>  vertex_weights(n_base);
+    for (unsigned int c = 0; c < n_base; ++c)
+      vertex_weights[c] = std::max<std::uint64_t>(1, weights[c] / factor);
+    std::vector<idx_t> part(n_base, 0);
+    idx_t              n = n_base, n_constraints = 1, edge_cut = 0;
+    // METIS cannot split n cells into more than n parts.
+    idx_t n_metis_parts = std::min<idx_t>(n, n_parts);
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    // SparsityTools::partition's choice: recursive bisection up to 8 parts.
+    const int status
+      = (n_metis_parts <= 8 ? METIS_PartGraphRecursive
+                            : METIS_PartGraphKway)(&n,
+                                                   &n_constraints,
+                                                   xadj.data(),
+                                                   adjncy.data(),
+                                                   vertex_weights.data(),
+                                                   nullptr,
+                                                   nullptr,
+                                                   &n_metis_parts,
+                                                   nullptr,
+                                                   nullptr,
+                                                   options,
+                                                   &edge_cut,
+                                                   part.data());
+    AssertThrow(status == METIS_OK,
+                ExcMessage("METIS failed to split the grid's cells (error "
+                           + std::to_string(status) + ")."));
+    return std::vector<unsigned int>(part.begin(), part.end());
   }
 
 

@@ -22,6 +22,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/parallel/domain_partition.h>
@@ -618,6 +622,60 @@ namespace
                 partition.counted_nodes()[w.global_node(i)]);
   }
 } // namespace
+
+
+
+namespace
+{
+  // DomainPartition::metis_split() against what it replaces: deal.II's
+  // SparsityTools::partition() on the face graph that
+  // GridTools::get_face_connectivity_of_cells() builds (each cell with
+  // itself and its face neighbours).
+  template <int d>
+  void
+  expect_deal_iis_metis_split(const std::vector<unsigned int> &subdivisions)
+  {
+    Point<d> upper;
+    for (unsigned int k = 0; k < d; ++k)
+      upper[k] = 1. + k;
+    const BackgroundGrid<d> grid(
+      MeshGeneration::box_simplices(Point<d>(), upper, subdivisions));
+    std::mt19937                                rng(7);
+    std::uniform_int_distribution<unsigned int> points(0, 5);
+    std::vector<unsigned int>                   weights(grid.n_cells());
+    for (unsigned int &w : weights)
+      w = 1 + 64 * (points(rng) < 2 ? points(rng) : 0);
+
+    DynamicSparsityPattern connectivity(grid.n_cells(), grid.n_cells());
+    for (unsigned int c = 0; c < grid.n_cells(); ++c)
+      {
+        connectivity.add(c, c);
+        for (const unsigned int nb : grid.cell_neighbors[c])
+          if (nb != BackgroundGrid<d>::invalid)
+            {
+              connectivity.add(c, nb);
+              connectivity.add(nb, c);
+            }
+      }
+    SparsityPattern graph;
+    graph.copy_from(connectivity);
+    for (const unsigned int n_parts : {2u, 3u, 8u, 11u})
+      {
+        std::vector<unsigned int> expected(grid.n_cells());
+        SparsityTools::partition(
+          graph, weights, n_parts, expected, SparsityTools::Partitioner::metis);
+        EXPECT_EQ(DomainPartition<d>::metis_split(grid, weights, n_parts),
+                  expected)
+          << d << "D, " << n_parts << " parts";
+      }
+  }
+} // namespace
+
+TEST(GridPartition, MetisSplitIsDealIIsPartition)
+{
+  expect_deal_iis_metis_split<2>({30, 20});
+  expect_deal_iis_metis_split<3>({6, 5, 4});
+}
 
 
 

@@ -165,6 +165,82 @@ namespace
 
 
 
+namespace
+{
+  // The grid of a box straight from MeshGeneration::box_simplices() must be
+  // the grid of deal.II's mesh of that box, array for array.
+  template <int dim>
+  void
+  expect_same_box_grid(const Point<dim>                &lower,
+                       const Point<dim>                &upper,
+                       const std::vector<unsigned int> &subdivisions)
+  {
+    Triangulation<dim> tria;
+    MeshGeneration::make_box(lower, upper, subdivisions, tria);
+    const BackgroundGrid<dim> a(std::move(tria));
+    const BackgroundGrid<dim> b(
+      MeshGeneration::box_simplices(lower, upper, subdivisions));
+    SCOPED_TRACE(std::to_string(dim) + "D box of " + std::to_string(a.n_cells())
+                 + " cells");
+    ASSERT_EQ(a.n_cells(), b.n_cells());
+    ASSERT_EQ(a.n_nodes(), b.n_nodes());
+    EXPECT_EQ(a.node_positions, b.node_positions);
+    EXPECT_EQ(a.cell_nodes, b.cell_nodes);
+    EXPECT_EQ(a.cell_neighbors, b.cell_neighbors);
+    ASSERT_EQ(a.boundary_faces.size(), b.boundary_faces.size());
+    for (unsigned int f = 0; f < a.boundary_faces.size(); ++f)
+      {
+        EXPECT_EQ(a.boundary_faces[f].cell, b.boundary_faces[f].cell);
+        EXPECT_EQ(a.boundary_faces[f].vertex, b.boundary_faces[f].vertex);
+        EXPECT_EQ(a.boundary_faces[f].boundary_id,
+                  b.boundary_faces[f].boundary_id);
+      }
+    EXPECT_EQ(a.block_colour, b.block_colour);
+    EXPECT_EQ(a.n_colours, b.n_colours);
+    EXPECT_EQ(a.min_altitude_global, b.min_altitude_global);
+    EXPECT_EQ(a.max_altitude_global, b.max_altitude_global);
+    EXPECT_EQ(a.lower_corner, b.lower_corner);
+    EXPECT_EQ(a.upper_corner, b.upper_corner);
+  }
+} // namespace
+
+TEST(BoxGrid, SameGridAsDealIIsMesh)
+{
+  // Odd and even counts (the 3D pattern alternates by parity), one box
+  // thick, corners off the origin, unequal spacings.
+  expect_same_box_grid(Point<2>(0, 0), Point<2>(1, 1), {1, 1});
+  expect_same_box_grid(Point<2>(-0.3, 0.2), Point<2>(2.1, 0.9), {7, 4});
+  expect_same_box_grid(Point<2>(-1, -2), Point<2>(3, 1), {40, 33});
+  expect_same_box_grid(Point<3>(0, 0, 0), Point<3>(1, 1, 1), {1, 1, 1});
+  expect_same_box_grid(Point<3>(-0.3, 0.2, 0.1),
+                       Point<3>(2.1, 0.9, 0.35),
+                       {5, 4, 1});
+  expect_same_box_grid(Point<3>(-1, -2, 0), Point<3>(3, 1, 2), {8, 7, 6});
+}
+
+TEST(BoxGrid, BadBoxesAreRefused)
+{
+  EXPECT_THROW(MeshGeneration::box_simplices(Point<2>(0, 0),
+                                             Point<2>(1, 1),
+                                             {4}),
+               ExceptionBase);
+  EXPECT_THROW(MeshGeneration::box_simplices(Point<2>(0, 0),
+                                             Point<2>(1, 0),
+                                             {4, 4}),
+               ExceptionBase);
+  EXPECT_THROW(MeshGeneration::box_simplices(Point<3>(0, 0, 0),
+                                             Point<3>(1, 1, 1),
+                                             {4, 0, 4}),
+               ExceptionBase);
+  // 5 * 2000^3 tetrahedra overflow the cells' unsigned int numbers.
+  EXPECT_THROW(MeshGeneration::box_simplices(Point<3>(0, 0, 0),
+                                             Point<3>(1, 1, 1),
+                                             {2000, 2000, 2000}),
+               ExceptionBase);
+}
+
+
+
 TEST(PointLocation, Structured2D)
 {
   Triangulation<2> tria;

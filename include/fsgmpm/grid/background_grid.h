@@ -10,6 +10,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <fsgmpm/grid/cell_geometry.h>
+#include <fsgmpm/grid/mesh_generation.h>
 
 #include <algorithm>
 #include <array>
@@ -33,7 +34,12 @@ namespace fsgmpm
    * The grid keeps no deal.II mesh: after its arrays are built, the
    * Triangulation and DoFHandler are released (some 170 B per cell by their
    * memory_consumption(), about 320 B resident; the mesh's vertices and
-   * connectivity are node_positions and cell_nodes).
+   * connectivity are node_positions and cell_nodes). A box (the "box" grid
+   * of the scenes) never creates them: its grid is built from the vertices
+   * and cells deal.II's generator would hand its Triangulation, numbered
+   * as the DoFHandler would number them (BackgroundGrid(const
+   * SimplexMesh &), tested equal array for array), since the mesh's
+   * creation held some 300 B per triangle at its peak.
    */
   template <int dim>
   class BackgroundGrid
@@ -48,6 +54,18 @@ namespace fsgmpm
      * of simplices or has a degenerate cell.
      */
     explicit BackgroundGrid(Triangulation<dim> &&triangulation);
+
+    /**
+     * The grid of a mesh given as arrays (MeshGeneration::box_simplices()),
+     * without creating deal.II's Triangulation, which at its creation holds
+     * some 25 times the memory of these arrays. The same grid as the
+     * constructor above makes from the Triangulation that
+     * Triangulation::create_triangulation() makes of these vertices and
+     * cells, array for array (nodes numbered as the DoFHandler numbers
+     * them); boundary faces get the id of the bounding box's plane they lie
+     * on, as MeshGeneration::make_box() gives them. Throws as above.
+     */
+    explicit BackgroundGrid(const MeshGeneration::SimplexMesh<dim> &mesh);
 
     /// An empty grid, for receive_window() to fill.
     BackgroundGrid() = default;
@@ -394,6 +412,9 @@ namespace fsgmpm
 
     void
     compute_cell_data(const DoFHandler<dim> &dof_handler);
+    /// The bounding box and the altitudes; throws on a degenerate cell.
+    void
+    check_cells();
     void
     compute_neighbors();
     void

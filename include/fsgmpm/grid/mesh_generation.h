@@ -5,6 +5,9 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <deal.II/base/types.h>
+
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,6 +31,42 @@ namespace fsgmpm
              const Point<dim>                &upper,
              const std::vector<unsigned int> &subdivisions,
              Triangulation<dim>              &triangulation);
+
+    /// A simplex mesh as two arrays: vertex positions, and each cell's
+    /// vertex numbers in deal.II's CellData order.
+    template <int dim>
+    struct SimplexMesh
+    {
+      std::vector<Point<dim>>                        vertices;
+      std::vector<std::array<unsigned int, dim + 1>> cells;
+    };
+
+    /**
+     * make_box()'s mesh without a Triangulation: the vertices and cells
+     * that GridGenerator::subdivided_hyper_rectangle_with_simplices() hands
+     * to Triangulation::create_triangulation(), in the same order (rows of
+     * vertices; 2 triangles per square, 5 tetrahedra per cube alternating
+     * between two patterns). Creating deal.II's mesh holds about 300 B per
+     * triangle at its peak, against 12 B here: on one process of an MPI
+     * run, or of a large serial one, it was the largest memory of the run.
+     * BackgroundGrid(const SimplexMesh &) builds the grid of make_box()
+     * from it, array for array (tested).
+     */
+    template <int dim>
+    SimplexMesh<dim>
+    box_simplices(const Point<dim>                &lower,
+                  const Point<dim>                &upper,
+                  const std::vector<unsigned int> &subdivisions);
+
+    /// colorize_bounding_box()'s rule for one boundary face: the id of the
+    /// plane of the bounding box [@p lower, @p upper] that the face's centre
+    /// @p center lies on, or @p id if it lies on none.
+    template <int dim>
+    types::boundary_id
+    bounding_box_id(const Point<dim>  &center,
+                    const Point<dim>  &lower,
+                    const Point<dim>  &upper,
+                    types::boundary_id id);
 
     /// Read a Gmsh .msh file of triangles (2D) or tetrahedra (3D). Physical
     /// boundary tags become boundary ids.

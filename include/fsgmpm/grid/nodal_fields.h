@@ -24,11 +24,13 @@ namespace fsgmpm
     void
     resize(const unsigned int n_nodes)
     {
-      mass.assign(n_nodes, 0.);
-      momentum.assign(n_nodes, Tensor<1, dim>());
-      internal_force.assign(n_nodes, Tensor<1, dim>());
-      velocity.assign(n_nodes, Tensor<1, dim>());
-      acceleration.assign(n_nodes, Tensor<1, dim>());
+      // Fresh arrays, not assign(): a window after a whole grid, or a
+      // smaller window after a repartition, keeps no larger capacity.
+      refill(mass, n_nodes);
+      refill(momentum, n_nodes);
+      refill(internal_force, n_nodes);
+      refill(velocity, n_nodes);
+      refill(acceleration, n_nodes);
       // The fields of one option each are sized when it first writes them
       // (use()): most scenes need none of them.
       release(added_mass);
@@ -36,8 +38,8 @@ namespace fsgmpm
       release(contact_volume);
       release(volume_stress);
       release(support_volume);
-      active_stamp.assign(n_nodes, 0);
-      active_nodes.clear();
+      refill(active_stamp, n_nodes);
+      release(active_nodes);
       stamp = 0;
     }
 
@@ -158,6 +160,15 @@ namespace fsgmpm
     release(std::vector<T> &field)
     {
       std::vector<T>().swap(field);
+    }
+
+    /// @p field as @p n zeros, its capacity n.
+    template <typename T>
+    static void
+    refill(std::vector<T> &field, const unsigned int n)
+    {
+      release(field);
+      field.resize(n, T());
     }
   };
 } // namespace fsgmpm

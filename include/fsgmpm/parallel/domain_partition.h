@@ -74,6 +74,18 @@ namespace fsgmpm
           const std::vector<unsigned int> &points_per_cell,
           const MPI_Comm                  &comm);
 
+    /**
+     * METIS's split of the cells of field 0 of the whole @p grid into
+     * @p n_parts parts of about equal sums of @p weights (one per cell of
+     * field 0), on this process alone: the owners
+     * GridTools::partition_triangulation() would give a Triangulation of
+     * the grid with these cell weights, without building one.
+     */
+    static std::vector<unsigned int>
+    metis_split(const BackgroundGrid<dim>       &grid,
+                const std::vector<unsigned int> &weights,
+                const unsigned int               n_parts);
+
     /// Take @p owners (the owning process of every cell, the same on all
     /// processes) as the partition: a checkpoint's, so that a restarted
     /// run splits the cells as the interrupted one did.
