@@ -91,42 +91,61 @@ namespace fsgmpm
     AssertThrow(grid.n_cells() < std::size_t(1) << 31,
                 ExcMessage("METIS numbers the cells by int: the grid has "
                            "more than 2^31 - 1 cells."));
-    // What GridTools::partition_triangulation does: METIS on the face graph
-    // of the cells, the rows of the SparsityPattern that
-    // GridTools::get_face_connectivity_of_cells builds (each cell with
-    // itself first, then its face neighbours in ascending order; deal.II
-    // 9.4 grid_tools.cc:3732-3758), called as SparsityTools::partition
-    // calls it (sparsity_tools.cc, partition_metis). Built straight from the
-    // grid's neighbours, the graph costs 4 B per entry once, where deal.II's
-    // pattern and its copy to METIS's integers held 28 B (the start's
-    // peak of memory on process 0). The same owners (tested).
-    std::vector<idx_t> xadj(n_base + 1, 0), adjncy;
-    adjncy.reserve(std::size_t(n_base) * (dim + 2));
-    for (unsigned int c = 0; c < n_base; ++c)
+    // METIS splits the grid's blocks of cells (BackgroundGrid::
+    // cell_block(): 32 consecutive cells, a compact strip of the mesh), not
+    // the cells: METIS holds about 110 B per vertex of its graph, on
+    // process 0, which was the largest memory of process 0 (86 MB of the
+    // 153 MB heap at its peak for 768 000 triangles), and a block is far
+    // below a process's share of the cells. A grid of fewer than 16
+    // blocks per part is split by cells. Otherwise the graph is the one
+    // GridTools::partition_triangulation gives METIS, of units instead of
+    // cells: each unit with itself first, then the units across its cells'
+    // faces in ascending order (deal.II 9.4 grid_tools.cc:3732-3758), and
+    // METIS is called as SparsityTools::partition calls it (sparsity_tools.
+    // cc, partition_metis): the same owners as deal.II's on the same graph
+    // (tested), built straight from the grid's neighbours.
+    const unsigned int n_blocks
+      = (n_base + BackgroundGrid<dim>::cells_per_block - 1)
+        / BackgroundGrid<dim>::cells_per_block;
+    const unsigned int unit_size
+      = n_blocks >= 16 * n_parts ? BackgroundGrid<dim>::cells_per_block : 1;
+    const unsigned int n_units = (n_base + unit_size - 1) / unit_size;
+    std::vector<idx_t> xadj(n_units + 1, 0), adjncy;
+    adjncy.reserve(std::size_t(n_units) * (dim + 3));
+    std::vector<std::uint64_t> unit_weights(n_units, 0);
+    std::vector<unsigned int>  across;
+    for (unsigned int u = 0; u < n_units; ++u)
       {
-        std::array<unsigned int, dim + 1> neighbors = grid.cell_neighbors[c];
-        std::sort(neighbors.begin(), neighbors.end());
-        adjncy.push_back(c);
-        for (unsigned int k = 0; k < neighbors.size(); ++k)
-          if (neighbors[k] != BackgroundGrid<dim>::invalid && neighbors[k] != c
-              && (k == 0 || neighbors[k] != neighbors[k - 1]))
-            adjncy.push_back(neighbors[k]);
-        xadj[c + 1] = adjncy.size();
+        across.clear();
+        for (unsigned int c = u * unit_size;
+             c < std::min(n_base, (u + 1) * unit_size);
+             ++c)
+          {
+            unit_weights[u] += weights[c];
+            for (const unsigned int nb : grid.cell_neighbors[c])
+              if (nb != BackgroundGrid<dim>::invalid && nb / unit_size != u)
+                across.push_back(nb / unit_size);
+          }
+        std::sort(across.begin(), across.end());
+        across.erase(std::unique(across.begin(), across.end()), across.end());
+        adjncy.push_back(u);
+        adjncy.insert(adjncy.end(), across.begin(), across.end());
+        xadj[u + 1] = adjncy.size();
       }
     // METIS sums the weights in int: a run whose weights would overflow
     // it has them divided by a common factor (a few points per cell lost
     // in the rounding, against 10^8 or more in all).
     std::uint64_t total = 0;
-    for (const unsigned int w : weights)
+    for (const std::uint64_t w : unit_weights)
       total += w;
     const std::uint64_t max_total = std::numeric_limits<idx_t>::max() / 2;
     const std::uint64_t factor    = total / max_total + 1;
-    std::vector<idx_t>  vertex_weights(n_base);
-    for (unsigned int c = 0; c < n_base; ++c)
-      vertex_weights[c] = std::max<std::uint64_t>(1, weights[c] / factor);
-    std::vector<idx_t> part(n_base, 0);
-    idx_t              n = n_base, n_constraints = 1, edge_cut = 0;
-    // METIS cannot split n cells into more than n parts.
+    std::vector<idx_t>  vertex_weights(n_units);
+    for (unsigned int u = 0; u < n_units; ++u)
+      vertex_weights[u] = std::max<std::uint64_t>(1, unit_weights[u] / factor);
+    std::vector<idx_t> part(n_units, 0);
+    idx_t              n = n_units, n_constraints = 1, edge_cut = 0;
+    // METIS cannot split n units into more than n parts.
     idx_t n_metis_parts = std::min<idx_t>(n, n_parts);
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
@@ -149,7 +168,10 @@ namespace fsgmpm
     AssertThrow(status == METIS_OK,
                 ExcMessage("METIS failed to split the grid's cells (error "
                            + std::to_string(status) + ")."));
-    return std::vector<unsigned int>(part.begin(), part.end());
+    std::vector<unsigned int> owners(n_base);
+    for (unsigned int c = 0; c < n_base; ++c)
+      owners[c] = part[c / unit_size];
+    return owners;
   }
 
 

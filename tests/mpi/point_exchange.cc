@@ -627,13 +627,16 @@ namespace
 
 namespace
 {
-  // DomainPartition::metis_split() against what it replaces: deal.II's
-  // SparsityTools::partition() on the face graph that
-  // GridTools::get_face_connectivity_of_cells() builds (each cell with
-  // itself and its face neighbours).
+  // DomainPartition::metis_split() against deal.II's SparsityTools::
+  // partition() on the graph GridTools::get_face_connectivity_of_cells()
+  // builds (each unit with itself and the units across its faces), of
+  // the grid's blocks of cells (cell_block()) when the grid has at least 16
+  // blocks per part, else of cells; every cell goes to its unit's part.
   template <int d>
   void
-  expect_deal_iis_metis_split(const std::vector<unsigned int> &subdivisions)
+  expect_deal_iis_metis_split(const std::vector<unsigned int> &subdivisions,
+                              const std::vector<unsigned int> &parts,
+                              const bool                       by_blocks)
   {
     Point<d> upper;
     for (unsigned int k = 0; k < d; ++k)
@@ -646,35 +649,50 @@ namespace
     for (unsigned int &w : weights)
       w = 1 + 64 * (points(rng) < 2 ? points(rng) : 0);
 
-    DynamicSparsityPattern connectivity(grid.n_cells(), grid.n_cells());
+    const auto unit = [&](const unsigned int c) {
+      return by_blocks ? grid.cell_block(c) : c;
+    };
+    const unsigned int        n_units = unit(grid.n_cells() - 1) + 1;
+    std::vector<unsigned int> unit_weights(n_units, 0);
+    DynamicSparsityPattern    connectivity(n_units, n_units);
     for (unsigned int c = 0; c < grid.n_cells(); ++c)
       {
-        connectivity.add(c, c);
+        unit_weights[unit(c)] += weights[c];
+        connectivity.add(unit(c), unit(c));
         for (const unsigned int nb : grid.cell_neighbors[c])
           if (nb != BackgroundGrid<d>::invalid)
             {
-              connectivity.add(c, nb);
-              connectivity.add(nb, c);
+              connectivity.add(unit(c), unit(nb));
+              connectivity.add(unit(nb), unit(c));
             }
       }
     SparsityPattern graph;
     graph.copy_from(connectivity);
-    for (const unsigned int n_parts : {2u, 3u, 8u, 11u})
+    for (const unsigned int n_parts : parts)
       {
+        std::vector<unsigned int> unit_part(n_units);
+        SparsityTools::partition(graph,
+                                 unit_weights,
+                                 n_parts,
+                                 unit_part,
+                                 SparsityTools::Partitioner::metis);
         std::vector<unsigned int> expected(grid.n_cells());
-        SparsityTools::partition(
-          graph, weights, n_parts, expected, SparsityTools::Partitioner::metis);
+        for (unsigned int c = 0; c < grid.n_cells(); ++c)
+          expected[c] = unit_part[unit(c)];
         EXPECT_EQ(DomainPartition<d>::metis_split(grid, weights, n_parts),
                   expected)
-          << d << "D, " << n_parts << " parts";
+          << d << "D, " << grid.n_cells() << " cells, " << n_parts << " parts";
       }
   }
 } // namespace
 
 TEST(GridPartition, MetisSplitIsDealIIsPartition)
 {
-  expect_deal_iis_metis_split<2>({30, 20});
-  expect_deal_iis_metis_split<3>({6, 5, 4});
+  // 600 blocks; 2 blocks; 150 blocks (16 per part up to 9 parts).
+  expect_deal_iis_metis_split<2>({120, 80}, {2, 3, 8, 11}, true);
+  expect_deal_iis_metis_split<2>({6, 5}, {2, 3}, false);
+  expect_deal_iis_metis_split<3>({12, 10, 8}, {2, 3, 8}, true);
+  expect_deal_iis_metis_split<3>({12, 10, 8}, {11}, false);
 }
 
 

@@ -21,10 +21,10 @@ namespace fsgmpm
    * Which MPI process owns which cell of the background grid, and the halo
    * that makes every process's nodal values exact.
    *
-   * The cells are split by METIS on their face graph (as deal.II's
-   * GridTools::partition_triangulation does), weighted by the points they
-   * hold,
-   * so work follows the material. A process holds the points of its own
+   * The cells are split by METIS on the face graph of the grid's blocks of
+   * cells (as deal.II's GridTools::partition_triangulation does for
+   * cells), weighted by the points they hold, so work follows the
+   * material. A process holds the points of its own
    * cells and, during a step, copies ("ghosts") of the points of every cell
    * that shares a vertex with one of its cells: the same layer that
    * parallel::fullydistributed::Triangulation keeps as ghost cells. Then
@@ -77,9 +77,12 @@ namespace fsgmpm
     /**
      * METIS's split of the cells of field 0 of the whole @p grid into
      * @p n_parts parts of about equal sums of @p weights (one per cell of
-     * field 0), on this process alone: the owners
-     * GridTools::partition_triangulation() would give a Triangulation of
-     * the grid with these cell weights, without building one.
+     * field 0), on this process alone. METIS splits the grid's blocks of
+     * cells (BackgroundGrid::cell_block()), each going whole to one part,
+     * on the graph GridTools::partition_triangulation() would build of
+     * them: a graph 32 times smaller than the cells' (METIS's memory on
+     * process 0). A grid of fewer than 16 blocks per part is split by
+     * cells, as partition_triangulation() would split it.
      */
     static std::vector<unsigned int>
     metis_split(const BackgroundGrid<dim>       &grid,
