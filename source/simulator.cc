@@ -114,38 +114,35 @@ namespace fsgmpm
 
     bodies = BodyDescription<dim>::parse_bodies(prm);
 
-    // MPI: process 0 builds the grid from the mesh, which no other
-    // process ever holds. The run is on windows of the grid: process 0
-    // alone holds the whole grid and sends each process its window once
-    // the cells are split (setup_bodies()). An error on process 0 stops
-    // every process (main()).
+    // MPI: process 0 builds the grid (a Gmsh file's from deal.II's mesh),
+    // which no other process ever holds whole. The run is on windows of the
+    // grid: process 0 alone holds the whole grid and sends each process its
+    // window once the cells are split (setup_bodies()). An error on process 0
+    // stops every process (main()).
     root
       = !on_windows() || Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     if (root && params.grid_type == "box")
       // A box's grid straight from its vertices and cells: creating
-      // deal.II's Triangulation of it was the peak of the run's memory.
+      // deal.II's Triangulation of it was the peak of the run's memory
+      // (doc/performance.md, "A box's grid without deal.II's mesh").
       grid
         = std::make_unique<BackgroundGrid<dim>>(MeshGeneration::box_simplices(
           params.lower_corner, params.upper_corner, params.subdivisions));
+    else if (root && params.grid_type == "extruded box")
+      {
+        if constexpr (dim == 3)
+          grid = std::make_unique<BackgroundGrid<dim>>(
+            MeshGeneration::extrude_simplices(
+              MeshGeneration::box_simplices(
+                Point<2>(params.lower_corner[0], params.lower_corner[1]),
+                Point<2>(params.upper_corner[0], params.upper_corner[1]),
+                params.subdivisions),
+              params.extrusion_thickness));
+      }
     else if (root)
       {
         Triangulation<dim> triangulation;
-        if (params.grid_type == "extruded box")
-          {
-            if constexpr (dim == 3)
-              {
-                Triangulation<2> base;
-                MeshGeneration::make_box(
-                  Point<2>(params.lower_corner[0], params.lower_corner[1]),
-                  Point<2>(params.upper_corner[0], params.upper_corner[1]),
-                  params.subdivisions,
-                  base);
-                MeshGeneration::extrude_to_tetrahedra(
-                  base, params.extrusion_thickness, triangulation);
-              }
-          }
-        else
-          MeshGeneration::read_gmsh(params.mesh_file, triangulation);
+        MeshGeneration::read_gmsh(params.mesh_file, triangulation);
         grid = std::make_unique<BackgroundGrid<dim>>(std::move(triangulation));
 #ifdef __GLIBC__
         // The mesh's many small blocks are free now; give their pages back

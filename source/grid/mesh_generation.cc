@@ -176,30 +176,23 @@ namespace fsgmpm
 
 
 
-    void
-    extrude_to_tetrahedra(const Triangulation<2> &tria_2d,
-                          const double            thickness,
-                          Triangulation<3>       &tria_3d)
+    SimplexMesh<3>
+    extrude_simplices(const SimplexMesh<2> &base, const double thickness)
     {
       AssertThrow(thickness > 0,
                   ExcMessage("The extrusion thickness must be positive."));
-      const auto           &v2 = tria_2d.get_vertices();
-      const unsigned int    nv = v2.size();
-      std::vector<Point<3>> vertices(2 * nv);
+      const unsigned int nv = base.vertices.size();
+      SimplexMesh<3>     mesh;
+      mesh.vertices.resize(2 * nv);
       for (unsigned int i = 0; i < nv; ++i)
         {
-          vertices[i]      = Point<3>(v2[i][0], v2[i][1], 0.);
-          vertices[nv + i] = Point<3>(v2[i][0], v2[i][1], thickness);
+          const Point<2> &x     = base.vertices[i];
+          mesh.vertices[i]      = Point<3>(x[0], x[1], 0.);
+          mesh.vertices[nv + i] = Point<3>(x[0], x[1], thickness);
         }
-
-      std::vector<CellData<3>> cells;
-      for (const auto &cell : tria_2d.active_cell_iterators())
+      mesh.cells.reserve(3 * base.cells.size());
+      for (std::array<unsigned int, 3> t : base.cells)
         {
-          AssertThrow(cell->n_vertices() == 3,
-                      ExcMessage("Only triangles can be extruded."));
-          std::array<unsigned int, 3> t = {{cell->vertex_index(0),
-                                            cell->vertex_index(1),
-                                            cell->vertex_index(2)}};
           std::sort(t.begin(), t.end());
           const unsigned int b0 = t[0], b1 = t[1], b2 = t[2];
           const unsigned int t0 = nv + t[0], t1 = nv + t[1], t2 = nv + t[2];
@@ -212,17 +205,41 @@ namespace fsgmpm
               Tensor<2, 3> e;
               for (unsigned int k = 0; k < 3; ++k)
                 for (unsigned int d = 0; d < 3; ++d)
-                  e[d][k] = vertices[tet[k + 1]][d] - vertices[tet[0]][d];
+                  e[d][k]
+                    = mesh.vertices[tet[k + 1]][d] - mesh.vertices[tet[0]][d];
               if (determinant(e) < 0)
                 std::swap(tet[2], tet[3]);
-              CellData<3> c(4);
-              for (unsigned int k = 0; k < 4; ++k)
-                c.vertices[k] = tet[k];
-              cells.push_back(c);
+              mesh.cells.push_back(tet);
             }
         }
+      return mesh;
+    }
+
+
+
+    void
+    extrude_to_tetrahedra(const Triangulation<2> &tria_2d,
+                          const double            thickness,
+                          Triangulation<3>       &tria_3d)
+    {
+      SimplexMesh<2> base;
+      base.vertices = tria_2d.get_vertices();
+      for (const auto &cell : tria_2d.active_cell_iterators())
+        {
+          AssertThrow(cell->n_vertices() == 3,
+                      ExcMessage("Only triangles can be extruded."));
+          base.cells.push_back({{cell->vertex_index(0),
+                                 cell->vertex_index(1),
+                                 cell->vertex_index(2)}});
+        }
+      const unsigned int       nv   = base.vertices.size();
+      const SimplexMesh<3>     mesh = extrude_simplices(base, thickness);
+      std::vector<CellData<3>> cells(mesh.cells.size(), CellData<3>(4));
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int k = 0; k < 4; ++k)
+          cells[c].vertices[k] = mesh.cells[c][k];
       tria_3d.clear();
-      tria_3d.create_triangulation(vertices, cells, SubCellData());
+      tria_3d.create_triangulation(mesh.vertices, cells, SubCellData());
 
       // Boundary ids: lateral faces from the 2D edges, z faces 4 and 5.
       std::map<std::pair<unsigned int, unsigned int>, types::boundary_id>

@@ -171,15 +171,8 @@ namespace
   // the grid of deal.II's mesh of that box, array for array.
   template <int dim>
   void
-  expect_same_box_grid(const Point<dim>                &lower,
-                       const Point<dim>                &upper,
-                       const std::vector<unsigned int> &subdivisions)
+  expect_same_grid(const BackgroundGrid<dim> &a, const BackgroundGrid<dim> &b)
   {
-    Triangulation<dim> tria;
-    MeshGeneration::make_box(lower, upper, subdivisions, tria);
-    const BackgroundGrid<dim> a(std::move(tria));
-    const BackgroundGrid<dim> b(
-      MeshGeneration::box_simplices(lower, upper, subdivisions));
     SCOPED_TRACE(std::to_string(dim) + "D box of " + std::to_string(a.n_cells())
                  + " cells");
     ASSERT_EQ(a.n_cells(), b.n_cells());
@@ -202,6 +195,37 @@ namespace
     EXPECT_EQ(a.lower_corner, b.lower_corner);
     EXPECT_EQ(a.upper_corner, b.upper_corner);
   }
+
+  template <int dim>
+  void
+  expect_same_box_grid(const Point<dim>                &lower,
+                       const Point<dim>                &upper,
+                       const std::vector<unsigned int> &subdivisions)
+  {
+    Triangulation<dim> tria;
+    MeshGeneration::make_box(lower, upper, subdivisions, tria);
+    expect_same_grid(BackgroundGrid<dim>(std::move(tria)),
+                     BackgroundGrid<dim>(MeshGeneration::box_simplices(
+                       lower, upper, subdivisions)));
+  }
+
+  // The extruded box: deal.II's mesh of extrude_to_tetrahedra() on
+  // make_box() against the arrays of extrude_simplices() on box_simplices().
+  void
+  expect_same_extruded_grid(const Point<2>                  &lower,
+                            const Point<2>                  &upper,
+                            const std::vector<unsigned int> &subdivisions,
+                            const double                     thickness)
+  {
+    Triangulation<2> base;
+    MeshGeneration::make_box(lower, upper, subdivisions, base);
+    Triangulation<3> tria;
+    MeshGeneration::extrude_to_tetrahedra(base, thickness, tria);
+    expect_same_grid(
+      BackgroundGrid<3>(std::move(tria)),
+      BackgroundGrid<3>(MeshGeneration::extrude_simplices(
+        MeshGeneration::box_simplices(lower, upper, subdivisions), thickness)));
+  }
 } // namespace
 
 TEST(BoxGrid, SameGridAsDealIIsMesh)
@@ -216,6 +240,11 @@ TEST(BoxGrid, SameGridAsDealIIsMesh)
                        Point<3>(2.1, 0.9, 0.35),
                        {5, 4, 1});
   expect_same_box_grid(Point<3>(-1, -2, 0), Point<3>(3, 1, 2), {8, 7, 6});
+  expect_same_extruded_grid(Point<2>(0, 0), Point<2>(1, 1), {1, 1}, 0.1);
+  expect_same_extruded_grid(Point<2>(-0.3, 0.2),
+                            Point<2>(2.1, 0.9),
+                            {9, 4},
+                            0.05);
 }
 
 TEST(BoxGrid, BadBoxesAreRefused)
@@ -232,6 +261,11 @@ TEST(BoxGrid, BadBoxesAreRefused)
                                              Point<3>(1, 1, 1),
                                              {4, 0, 4}),
                ExceptionBase);
+  EXPECT_THROW(
+    MeshGeneration::extrude_simplices(
+      MeshGeneration::box_simplices(Point<2>(0, 0), Point<2>(1, 1), {2, 2}),
+      0.),
+    ExceptionBase);
   // 5 * 2000^3 tetrahedra overflow the cells' unsigned int numbers.
   EXPECT_THROW(MeshGeneration::box_simplices(Point<3>(0, 0, 0),
                                              Point<3>(1, 1, 1),

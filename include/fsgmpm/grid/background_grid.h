@@ -34,8 +34,8 @@ namespace fsgmpm
    * The grid keeps no deal.II mesh: after its arrays are built, the
    * Triangulation and DoFHandler are released (some 170 B per cell by their
    * memory_consumption(), about 320 B resident; the mesh's vertices and
-   * connectivity are node_positions and cell_nodes). A box (the "box" grid
-   * of the scenes) never creates them: its grid is built from the vertices
+   * connectivity are node_positions and cell_nodes). A box (the "box" and
+   * "extruded box" grids of the scenes) never creates them: its grid is built from the vertices
    * and cells deal.II's generator would hand its Triangulation, numbered
    * as the DoFHandler would number them (BackgroundGrid(const
    * SimplexMesh &), tested equal array for array), since the mesh's

@@ -84,6 +84,14 @@ namespace fsgmpm
                           const double            thickness,
                           Triangulation<3>       &triangulation_3d);
 
+    /// extrude_to_tetrahedra()'s vertices and cells without a Triangulation
+    /// (each prism's three tetrahedra in the same order). Of a box
+    /// (box_simplices()), BackgroundGrid(const SimplexMesh &) gives the grid
+    /// of extrude_to_tetrahedra() on make_box(), boundary ids included (the
+    /// box's sides are the bounding box's planes; tested).
+    SimplexMesh<3>
+    extrude_simplices(const SimplexMesh<2> &base, const double thickness);
+
     /// Set boundary ids 0..2*dim-1 on the faces that lie on the planes of
     /// the bounding box (x = min, x = max, y = min, ...).
     template <int dim>
