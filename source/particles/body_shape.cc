@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace fsgmpm
@@ -142,20 +143,45 @@ namespace fsgmpm
         size = std::max(size, a.distance(vertices[0]));
         twice_area += a[0] * b[1] - b[0] * a[1];
       }
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = i + 1; j < n; ++j)
-        {
-          // Adjacent edges share a vertex and are not tested.
-          if (j == i + 1 || (i == 0 && j == n - 1))
-            continue;
-          AssertThrow(!segments_intersect(vertices[i],
-                                          vertices[(i + 1) % n],
-                                          vertices[j],
-                                          vertices[(j + 1) % n]),
-                      ExcMessage("The polygon intersects itself (edges "
-                                 + std::to_string(i) + " and "
-                                 + std::to_string(j) + ")."));
-        }
+    // Two edges can cross only where their y ranges overlap: a sweep over
+    // y tests each edge against the edges that start (in y) before it ends,
+    // not all n^2 / 2 pairs (10 million for a membrane of 4 600 vertices,
+    // 0.3 s). The first crossing pair in (i, j) order is reported, as the
+    // test of all pairs did.
+    const auto y_range = [&](const unsigned int i) {
+      const double y0 = vertices[i][1], y1 = vertices[(i + 1) % n][1];
+      return std::make_pair(std::min(y0, y1), std::max(y0, y1));
+    };
+    std::vector<unsigned int> by_low_y(n);
+    std::iota(by_low_y.begin(), by_low_y.end(), 0u);
+    std::sort(by_low_y.begin(),
+              by_low_y.end(),
+              [&](const unsigned int a, const unsigned int b) {
+                return y_range(a).first < y_range(b).first;
+              });
+    std::pair<unsigned int, unsigned int> crossing(n, n);
+    for (unsigned int a = 0; a < n; ++a)
+      {
+        const double top = y_range(by_low_y[a]).second;
+        for (unsigned int b = a + 1; b < n && y_range(by_low_y[b]).first <= top;
+             ++b)
+          {
+            const unsigned int i = std::min(by_low_y[a], by_low_y[b]);
+            const unsigned int j = std::max(by_low_y[a], by_low_y[b]);
+            // Adjacent edges share a vertex and are not tested.
+            if (j == i + 1 || (i == 0 && j == n - 1))
+              continue;
+            if (segments_intersect(vertices[i],
+                                   vertices[(i + 1) % n],
+                                   vertices[j],
+                                   vertices[(j + 1) % n]))
+              crossing = std::min(crossing, std::make_pair(i, j));
+          }
+      }
+    AssertThrow(crossing.first == n,
+                ExcMessage("The polygon intersects itself (edges "
+                           + std::to_string(crossing.first) + " and "
+                           + std::to_string(crossing.second) + ")."));
     AssertThrow(std::abs(twice_area) > 1e-12 * size * size,
                 ExcMessage("The polygon encloses no area (its vertices lie on "
                            "one line)."));

@@ -434,3 +434,73 @@ TEST(PolygonInside, SameAnswerAsInsidePolygon)
       EXPECT_EQ(inside.get_vertices(), v);
     }
 }
+
+
+
+// PolygonShape refuses a self-intersecting outline by a sweep over y; it
+// must name the first crossing pair of edges (i < j, in (i, j) order) that
+// a test of all pairs finds, here with its own orientation test.
+TEST(PolygonShape, SelfIntersectionAsATestOfAllPairs)
+{
+  const auto side
+    = [](const Point<2> &o, const Point<2> &a, const Point<2> &b) {
+        const double c
+          = (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+        return (c > 0) - (c < 0);
+      };
+  std::mt19937                           rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  unsigned int                           n_crossing = 0, n_simple = 0;
+  for (unsigned int trial = 0; trial < 400; ++trial)
+    {
+      const unsigned int    n = 4 + trial % 37;
+      std::vector<Point<2>> v(n);
+      // Half random points (they nearly always cross), half star-shaped
+      // (simple) outlines with a random radius per vertex.
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          if (trial % 2 == 0)
+            v[k] = Point<2>(u(rng), u(rng));
+          else
+            {
+              const double angle = 2 * M_PI * k / n, r = 0.5 + 0.4 * u(rng);
+              v[k] = Point<2>(r * std::cos(angle), r * std::sin(angle));
+            }
+        }
+      std::string expected;
+      for (unsigned int i = 0; i < n && expected.empty(); ++i)
+        for (unsigned int j = i + 2; j < n && expected.empty(); ++j)
+          {
+            if (i == 0 && j == n - 1)
+              continue;
+            const Point<2> &a = v[i], &b = v[(i + 1) % n], &c = v[j],
+                           &d = v[(j + 1) % n];
+            if (side(c, d, a) * side(c, d, b) < 0
+                && side(a, b, c) * side(a, b, d) < 0)
+              expected = "edges " + std::to_string(i) + " and "
+                         + std::to_string(j) + ")";
+          }
+      if (expected.empty())
+        {
+          ++n_simple;
+          EXPECT_NO_THROW(PolygonShape shape(v)) << "trial " << trial;
+        }
+      else
+        {
+          ++n_crossing;
+          try
+            {
+              PolygonShape shape(v);
+              ADD_FAILURE() << "trial " << trial << ": no error, " << expected;
+            }
+          catch (const ExceptionBase &e)
+            {
+              EXPECT_NE(std::string(e.what()).find(expected), std::string::npos)
+                << "trial " << trial << ": " << e.what();
+            }
+        }
+    }
+  // Both kinds were tried.
+  EXPECT_GT(n_crossing, 100u);
+  EXPECT_GT(n_simple, 100u);
+}
