@@ -98,7 +98,9 @@ namespace fsgmpm
     const unsigned int n = size();
     if (slot_of_cell.size() != n_cells)
       {
-        slot_of_cell.assign(n_cells, invalid_slot);
+        // A fresh array: a window's after the whole grid's (a restart's
+        // points come by whole-grid cells) keeps no whole-grid capacity.
+        std::vector<unsigned int>(n_cells, invalid_slot).swap(slot_of_cell);
         occupied_cells.clear();
       }
     // Empty the cells of the last sort, then list the occupied cells as
