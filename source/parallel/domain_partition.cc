@@ -89,8 +89,8 @@ namespace fsgmpm
     const unsigned int n_base = grid.n_base_cells();
     AssertThrow(weights.size() == n_base && n_parts > 0, ExcInternalError());
     AssertThrow(grid.n_cells() < std::size_t(1) << 31,
-                ExcMessage("METIS numbers the cells by int: the grid has "
-                           "more than 2^31 - 1 cells."));
+                ExcMessage("METIS counts in int: the grid has more than "
+                           "2^31 - 1 cells."));
     // METIS splits the grid's blocks of cells (BackgroundGrid::
     // cell_block(): 32 consecutive cells, a compact strip of the mesh), not
     // the cells: METIS holds about 110 B per vertex of its graph, on

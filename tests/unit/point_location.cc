@@ -17,6 +17,8 @@
 #include <cstdlib>
 #include <random>
 
+#include "grid_comparison.h"
+
 using namespace fsgmpm;
 
 namespace
@@ -175,25 +177,7 @@ namespace
   {
     SCOPED_TRACE(std::to_string(dim) + "D box of " + std::to_string(a.n_cells())
                  + " cells");
-    ASSERT_EQ(a.n_cells(), b.n_cells());
-    ASSERT_EQ(a.n_nodes(), b.n_nodes());
-    EXPECT_EQ(a.node_positions, b.node_positions);
-    EXPECT_EQ(a.cell_nodes, b.cell_nodes);
-    EXPECT_EQ(a.cell_neighbors, b.cell_neighbors);
-    ASSERT_EQ(a.boundary_faces.size(), b.boundary_faces.size());
-    for (unsigned int f = 0; f < a.boundary_faces.size(); ++f)
-      {
-        EXPECT_EQ(a.boundary_faces[f].cell, b.boundary_faces[f].cell);
-        EXPECT_EQ(a.boundary_faces[f].vertex, b.boundary_faces[f].vertex);
-        EXPECT_EQ(a.boundary_faces[f].boundary_id,
-                  b.boundary_faces[f].boundary_id);
-      }
-    EXPECT_EQ(a.block_colour, b.block_colour);
-    EXPECT_EQ(a.n_colours, b.n_colours);
-    EXPECT_EQ(a.min_altitude_global, b.min_altitude_global);
-    EXPECT_EQ(a.max_altitude_global, b.max_altitude_global);
-    EXPECT_EQ(a.lower_corner, b.lower_corner);
-    EXPECT_EQ(a.upper_corner, b.upper_corner);
+    Testing::expect_same_grid_arrays(a, b);
   }
 
   template <int dim>

@@ -35,11 +35,12 @@ namespace fsgmpm
    * Triangulation and DoFHandler are released (some 170 B per cell by their
    * memory_consumption(), about 320 B resident; the mesh's vertices and
    * connectivity are node_positions and cell_nodes). A box (the "box" and
-   * "extruded box" grids of the scenes) never creates them: its grid is built from the vertices
-   * and cells deal.II's generator would hand its Triangulation, numbered
-   * as the DoFHandler would number them (BackgroundGrid(const
-   * SimplexMesh &), tested equal array for array), since the mesh's
-   * creation held some 300 B per triangle at its peak.
+   * "extruded box" grids of the scenes) never creates them: its grid is
+   * built from the vertices and cells that deal.II's generator would hand
+   * its Triangulation, the nodes numbered as the DoFHandler would number
+   * them (BackgroundGrid(const SimplexMesh &), tested equal array for
+   * array), since creating the mesh held some 300 B per triangle at its
+   * peak.
    */
   template <int dim>
   class BackgroundGrid
@@ -56,10 +57,10 @@ namespace fsgmpm
     explicit BackgroundGrid(Triangulation<dim> &&triangulation);
 
     /**
-     * The grid of a mesh given as arrays (MeshGeneration::box_simplices()),
-     * without creating deal.II's Triangulation, which at its creation holds
-     * some 25 times the memory of these arrays. The same grid as the
-     * constructor above makes from the Triangulation that
+     * The grid of a mesh given as arrays (MeshGeneration::box_simplices(),
+     * extrude_simplices()), without creating deal.II's Triangulation, which
+     * at its creation holds some 15 times the memory of these arrays. The same
+     * grid as the constructor above makes from the Triangulation that
      * Triangulation::create_triangulation() makes of these vertices and
      * cells, array for array (nodes numbered as the DoFHandler numbers
      * them); boundary faces get the id of the bounding box's plane they lie

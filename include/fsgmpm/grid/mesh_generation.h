@@ -47,7 +47,7 @@ namespace fsgmpm
      * to Triangulation::create_triangulation(), in the same order (rows of
      * vertices; 2 triangles per square, 5 tetrahedra per cube alternating
      * between two patterns). Creating deal.II's mesh holds about 300 B per
-     * triangle at its peak, against 12 B here: on one process of an MPI
+     * triangle at its peak, against about 20 B here: on one process of an MPI
      * run, or of a large serial one, it was the largest memory of the run.
      * BackgroundGrid(const SimplexMesh &) builds the grid of make_box()
      * from it, array for array (tested).
