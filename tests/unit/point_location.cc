@@ -318,6 +318,74 @@ TEST(PointLocation, ExtrudedSlab)
   check_grid(BackgroundGrid<3>(std::move(slab)), "extruded slab");
 }
 
+namespace
+{
+  // The grid's neighbours against deal.II's own: the cell across the face
+  // opposite local vertex k is deal.II's neighbour across that face.
+  template <int dim>
+  void
+  expect_deal_iis_neighbours(const Triangulation<dim> &tria,
+                             const std::string        &name)
+  {
+    Triangulation<dim> copy;
+    copy.copy_triangulation(tria);
+    const BackgroundGrid<dim> grid(std::move(copy));
+    unsigned int              n_inner = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          unsigned int opposite = 0;
+          for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+            {
+              bool on_face = false;
+              for (unsigned int w = 0; w < cell->face(f)->n_vertices(); ++w)
+                on_face
+                  = on_face
+                    || cell->face(f)->vertex_index(w) == cell->vertex_index(v);
+              if (!on_face)
+                opposite = v;
+            }
+          const unsigned int expected
+            = cell->at_boundary(f) ? BackgroundGrid<dim>::invalid
+                                   : cell->neighbor(f)->active_cell_index();
+          n_inner += !cell->at_boundary(f);
+          EXPECT_EQ(grid.cell_neighbors[cell->active_cell_index()][opposite],
+                    expected)
+            << name << ", cell " << cell->active_cell_index() << ", face " << f;
+        }
+    EXPECT_GT(n_inner, 0u) << name;
+  }
+} // namespace
+
+TEST(GridNeighbours, AsDealIIsNeighbours)
+{
+  Triangulation<2> square, distorted, gmsh_2d;
+  MeshGeneration::make_box(Point<2>(0, 0), Point<2>(1, 0.5), {10, 5}, square);
+  expect_deal_iis_neighbours(square, "box 2D");
+  MeshGeneration::make_box(Point<2>(0, 0), Point<2>(1, 1), {8, 8}, distorted);
+  distort(distorted);
+  expect_deal_iis_neighbours(distorted, "distorted 2D");
+  MeshGeneration::read_gmsh(data_dir() + "/meshes/square_triangles.msh",
+                            gmsh_2d);
+  expect_deal_iis_neighbours(gmsh_2d, "gmsh 2D");
+
+  Triangulation<3> cube, gmsh_3d, slab;
+  MeshGeneration::make_box(Point<3>(0, 0, 0),
+                           Point<3>(1, 1, 1),
+                           {3, 4, 5},
+                           cube);
+  expect_deal_iis_neighbours(cube, "box 3D");
+  MeshGeneration::read_gmsh(data_dir() + "/meshes/cube_tetrahedra.msh",
+                            gmsh_3d);
+  expect_deal_iis_neighbours(gmsh_3d, "gmsh 3D");
+  Triangulation<2> base;
+  MeshGeneration::make_box(Point<2>(0, 0), Point<2>(1, 0.5), {6, 3}, base);
+  MeshGeneration::extrude_to_tetrahedra(base, 0.1, slab);
+  expect_deal_iis_neighbours(slab, "extruded slab");
+}
+
+
+
 // The case deal.II 9.4's stock sort gets wrong (SPEC 4): points on a
 // triangulated square rotated slowly and re-located by walking from their
 // previous cell every step must always be in a cell that contains them.
