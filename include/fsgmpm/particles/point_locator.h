@@ -72,10 +72,14 @@ namespace fsgmpm
     /// it leaves the cells this grid holds or does not settle (no search).
     /// On a window, the membrane's location (MembraneCoupling::relocate())
     /// combines the walks and searches of all processes.
+    /// A longer walk (@p max_steps) answers "is x in the mesh?" for a
+    /// point far from @p guess in a convex mesh.
     unsigned int
-    walk(const Point<dim> &x, const unsigned int guess) const
+    walk(const Point<dim>  &x,
+         const unsigned int guess,
+         const unsigned int max_steps = max_walk_steps) const
     {
-      return walk(x, guess, grid.geometry(guess), false);
+      return walk(x, guess, grid.geometry(guess), false, max_steps);
     }
 
     static constexpr unsigned int max_walk_steps = 64;
@@ -109,10 +113,11 @@ namespace fsgmpm
     walk(const Point<dim>        &x,
          const unsigned int       guess,
          const CellGeometry<dim> &guess_geometry,
-         const bool               stop_beyond_window) const
+         const bool               stop_beyond_window,
+         const unsigned int       max_steps = max_walk_steps) const
     {
       unsigned int c = guess;
-      for (unsigned int step = 0; step < max_walk_steps; ++step)
+      for (unsigned int step = 0; step < max_steps; ++step)
         {
           const auto   lambda = step == 0 ? guess_geometry.barycentric(x)
                                           : grid.barycentric(c, x);
