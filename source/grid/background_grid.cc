@@ -171,18 +171,21 @@ namespace fsgmpm
         const auto     x = vertices(c);
         Tensor<2, dim> edges;
         double         scale = 1;
-        Point<dim>     center;
         for (unsigned int k = 0; k < dim; ++k)
           {
             for (unsigned int d = 0; d < dim; ++d)
               edges[d][k] = x[k + 1][d] - x[0][d];
             scale *= (x[k + 1] - x[0]).norm();
           }
-        for (const Point<dim> &v : x)
-          center += v / n_vertices;
+        // (The message, with the cell's centre, is built only on failure.)
         AssertThrow(std::abs(determinant(edges)) > 1e-12 * scale,
                     ExcMessage("Background-grid cell " + std::to_string(c)
-                               + " near " + Utilities::to_string(center[0])
+                               + " near " + Utilities::to_string([&x] {
+                                   double sum = 0;
+                                   for (const Point<dim> &v : x)
+                                     sum += v[0];
+                                   return sum / n_vertices;
+                                 }())
                                + " is degenerate (zero volume)."));
 
         const double hmin   = min_altitude(c);

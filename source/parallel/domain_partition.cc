@@ -104,34 +104,35 @@ namespace fsgmpm
     // METIS is called as SparsityTools::partition calls it (sparsity_tools.
     // cc, partition_metis): the same owners as deal.II's on the same graph
     // (tested), built straight from the grid's neighbours.
-    const unsigned int n_blocks
-      = (n_base + BackgroundGrid<dim>::cells_per_block - 1)
-        / BackgroundGrid<dim>::cells_per_block;
-    const unsigned int unit_size
-      = n_blocks >= 16 * n_parts ? BackgroundGrid<dim>::cells_per_block : 1;
-    const unsigned int n_units = (n_base + unit_size - 1) / unit_size;
-    std::vector<idx_t> xadj(n_units + 1, 0), adjncy;
-    adjncy.reserve(std::size_t(n_units) * (dim + 3));
+    // The units in the grid's own numbers: cell_block() grows with the cell
+    // number, so a unit's cells follow one another.
+    const bool by_blocks = grid.cell_block(n_base - 1) + 1 >= 16 * n_parts;
+    const auto unit      = [&](const unsigned int c) {
+      return by_blocks ? grid.cell_block(c) : c;
+    };
+    const unsigned int         n_units = unit(n_base - 1) + 1;
+    std::vector<idx_t>         xadj(1, 0), adjncy;
     std::vector<std::uint64_t> unit_weights(n_units, 0);
     std::vector<unsigned int>  across;
-    for (unsigned int u = 0; u < n_units; ++u)
+    adjncy.reserve(std::size_t(n_units) * (dim + 3));
+    for (unsigned int c = 0; c < n_base; ++c)
       {
-        across.clear();
-        for (unsigned int c = u * unit_size;
-             c < std::min(n_base, (u + 1) * unit_size);
-             ++c)
-          {
-            unit_weights[u] += weights[c];
-            for (const unsigned int nb : grid.cell_neighbors[c])
-              if (nb != BackgroundGrid<dim>::invalid && nb / unit_size != u)
-                across.push_back(nb / unit_size);
-          }
+        const unsigned int u = unit(c);
+        unit_weights[u] += weights[c];
+        for (const unsigned int nb : grid.cell_neighbors[c])
+          if (nb != BackgroundGrid<dim>::invalid && unit(nb) != u)
+            across.push_back(unit(nb));
+        if (c + 1 < n_base && unit(c + 1) == u)
+          continue;
+        // The unit's last cell: its row of the graph.
         std::sort(across.begin(), across.end());
         across.erase(std::unique(across.begin(), across.end()), across.end());
         adjncy.push_back(u);
         adjncy.insert(adjncy.end(), across.begin(), across.end());
-        xadj[u + 1] = adjncy.size();
+        xadj.push_back(adjncy.size());
+        across.clear();
       }
+    Assert(xadj.size() == n_units + 1, ExcInternalError());
     // METIS sums the weights in int: a run whose weights would overflow
     // it has them divided by a common factor (a few points per cell lost
     // in the rounding, against 10^8 or more in all).
@@ -170,7 +171,7 @@ namespace fsgmpm
                            + std::to_string(status) + ")."));
     std::vector<unsigned int> owners(n_base);
     for (unsigned int c = 0; c < n_base; ++c)
-      owners[c] = part[c / unit_size];
+      owners[c] = part[unit(c)];
     return owners;
   }
 

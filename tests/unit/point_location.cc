@@ -255,6 +255,25 @@ TEST(BoxGrid, BadBoxesAreRefused)
                                              Point<3>(1, 1, 1),
                                              {2000, 2000, 2000}),
                ExceptionBase);
+
+  // A cell of zero area (three vertices on a line, centred at x = 1) and
+  // a cell naming a vertex that is not there.
+  MeshGeneration::SimplexMesh<2> line;
+  line.vertices = {Point<2>(0, 0), Point<2>(1, 0), Point<2>(2, 0)};
+  line.cells    = {{{0, 1, 2}}};
+  try
+    {
+      const BackgroundGrid<2> grid(line);
+      ADD_FAILURE() << "a degenerate cell was accepted";
+    }
+  catch (const ExceptionBase &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("cell 0 near 1 is degenerate"),
+                std::string::npos)
+        << e.what();
+    }
+  line.cells = {{{0, 1, 3}}};
+  EXPECT_THROW(BackgroundGrid<2> grid(line), ExceptionBase);
 }
 
 
