@@ -1,8 +1,11 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parallel.h>
 
 #include <fsgmpm/particles/particle_store.h>
 
 #include <algorithm>
+#include <functional>
+#include <iterator>
 
 namespace fsgmpm
 {
@@ -109,20 +112,32 @@ namespace fsgmpm
       slot_of_cell[c] = invalid_slot;
     occupied_cells.clear();
     slot_begin.clear();
+    // By runs of points of one cell (the points of a cell are mostly
+    // together): one count per run, not an increment of the same counter
+    // per point, which waited for the previous one.
     bool sorted = true;
-    for (unsigned int p = 0; p < n; ++p)
+    for (unsigned int p = 0; p < n;)
       {
-        unsigned int &j = slot_of_cell[cell[p]];
+        const unsigned int c = cell[p];
+        unsigned int       q = p + 1;
+        while (q < n && cell[q] == c)
+          ++q;
+        unsigned int &j = slot_of_cell[c];
         if (j == invalid_slot)
           {
             j = occupied_cells.size();
-            occupied_cells.push_back(cell[p]);
+            occupied_cells.push_back(c);
             slot_begin.push_back(0);
           }
-        ++slot_begin[j];
-        sorted = sorted
-                 && (p == 0 || cell[p - 1] < cell[p]
-                     || (cell[p - 1] == cell[p] && id[p - 1] < id[p]));
+        slot_begin[j] += q - p;
+        // Sorted: the cells ascend, and inside a cell the ids.
+        if (sorted)
+          {
+            sorted = (p == 0 || cell[p - 1] < c);
+            for (unsigned int k = p + 1; sorted && k < q; ++k)
+              sorted = id[k - 1] < id[k];
+          }
+        p = q;
       }
     // Met in point order: ascending already when the points are sorted.
     // Otherwise sort the cells and renumber their slots, counts along.
@@ -156,8 +171,15 @@ namespace fsgmpm
     // Counting sort into the occupied cells.
     slot_cursor = slot_begin;
     order_scratch.resize(n);
-    for (unsigned int p = 0; p < n; ++p)
-      order_scratch[slot_cursor[slot_of_cell[cell[p]]]++] = p;
+    for (unsigned int p = 0; p < n;)
+      {
+        unsigned int      &cursor = slot_cursor[slot_of_cell[cell[p]]];
+        unsigned int       to     = cursor;
+        const unsigned int c      = cell[p];
+        for (; p < n && cell[p] == c; ++p)
+          order_scratch[to++] = p;
+        cursor = to;
+      }
     // Inside each cell by id: the points that stayed keep their order and
     // the few that came in are inserted.
     for (unsigned int j = 0; j < slot_begin.size(); ++j)
@@ -182,21 +204,36 @@ namespace fsgmpm
           }
     }
 
-    permute(position);
-    permute(velocity);
-    permute(stress);
-    permute(mass);
-    permute(volume);
-    permute(reference_volume);
-    permute(cell);
-    permute(material_id);
-    permute(body_id);
-    permute(free_surface);
-    permute(id);
-    if (!ghost.empty())
-      permute(ghost);
-    if (with_affine_velocity)
-      permute(affine_velocity);
+    // Each array along the same cycles, the arrays in parallel (one task
+    // each; serial, the sort held back the second thread).
+    const std::function<void()> arrays[]
+      = {[this]() { permute(position); },
+         [this]() { permute(velocity); },
+         [this]() { permute(stress); },
+         [this]() { permute(mass); },
+         [this]() { permute(volume); },
+         [this]() { permute(reference_volume); },
+         [this]() { permute(cell); },
+         [this]() { permute(material_id); },
+         [this]() { permute(body_id); },
+         [this]() { permute(free_surface); },
+         [this]() { permute(id); },
+         [this]() {
+           if (!ghost.empty())
+             permute(ghost);
+         },
+         [this]() {
+           if (with_affine_velocity)
+             permute(affine_velocity);
+         }};
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(std::size(arrays)),
+      [&](const unsigned int b, const unsigned int e) {
+        for (unsigned int k = b; k < e; ++k)
+          arrays[k]();
+      },
+      1);
   }
 
 

@@ -19,36 +19,32 @@ namespace fsgmpm
                    const NodalFields<dim>                       *nodes,
                    const std::vector<std::uint8_t>              *counted_nodes)
     {
-      const auto                        &cells = particles.occupied_cells;
-      std::vector<std::array<double, 3>> partial(cells.size());
-      CellLoops::parallel_range(
-        cells.size(),
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int i = b; i < e; ++i)
-            {
-              const unsigned int c = cells[i];
-              double             k = 0, s = 0, g = 0;
-              for (unsigned int p = particles.cell_begin(c);
-                   p < particles.cell_end(c);
-                   ++p)
-                {
-                  k += 0.5 * particles.mass[p]
-                       * particles.velocity[p].norm_square();
-                  s += particles.volume[p]
-                       * materials[particles.material_id[p]]
-                           ->strain_energy_density(particles.stress[p]);
-                  g -= particles.mass[p] * (gravity * particles.position[p]);
-                }
-              partial[i] = {{k, s, g}};
-            }
-        },
-        16);
-      // Compensated over the cells: the energies do not depend on the
-      // order of the cells or on how they are split over processes.
-      std::vector<CompensatedSum> sums(3); // kinetic, strain, potential
-      for (const auto &q : partial)
-        for (unsigned int k = 0; k < 3; ++k)
-          sums[k].add(q[k]);
+      // Each cell's points summed plainly, the cells compensated (in fixed
+      // chunks, in parallel: CellLoops::compensated_sums): the energies do
+      // not depend on the order of the cells, on how they are split over
+      // processes or on the number of threads.
+      const auto &cells = particles.occupied_cells;
+      const auto  cell_sums // kinetic, strain, potential
+        = CellLoops::compensated_sums<3>(
+          cells.size(), [&](const unsigned int i, auto &sums) {
+            const unsigned int c = cells[i];
+            double             k = 0, s = 0, g = 0;
+            for (unsigned int p = particles.cell_begin(c);
+                 p < particles.cell_end(c);
+                 ++p)
+              {
+                k += 0.5 * particles.mass[p]
+                     * particles.velocity[p].norm_square();
+                s += particles.volume[p]
+                     * materials[particles.material_id[p]]
+                         ->strain_energy_density(particles.stress[p]);
+                g -= particles.mass[p] * (gravity * particles.position[p]);
+              }
+            sums[0].add(k);
+            sums[1].add(s);
+            sums[2].add(g);
+          });
+      std::vector<CompensatedSum> sums(cell_sums.begin(), cell_sums.end());
       if (membrane)
         {
           sums[0].add(membrane->kinetic_energy());
@@ -58,13 +54,13 @@ namespace fsgmpm
         }
       // Eq. (30)'s kinetic energy of the grid, compensated.
       if (nodes)
-        {
-          sums.emplace_back();
-          for (const unsigned int i : nodes->active_nodes)
+        sums.push_back(CellLoops::compensated_sums<1>(
+          nodes->active_nodes.size(), [&](const unsigned int a, auto &sum) {
+            const unsigned int i = nodes->active_nodes[a];
             if (counted_nodes == nullptr || (*counted_nodes)[i])
-              sums.back().add(0.5 * nodes->mass[i]
-                              * nodes->velocity[i].norm_square());
-        }
+              sum[0].add(0.5 * nodes->mass[i]
+                         * nodes->velocity[i].norm_square());
+          })[0]);
       return sums;
     }
 

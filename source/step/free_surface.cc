@@ -32,8 +32,18 @@ namespace fsgmpm
           phi.assign(grid.n_nodes(), 0.);
           vol.assign(grid.n_nodes(), 0.);
         }
-      for (const unsigned int i : nodes.active_nodes)
+      // With one velocity field every active node is its own base node, met
+      // once: the loops over them run in parallel.
+      const auto for_each_active_node = [&](const auto &f) {
+        if (grid.n_velocity_fields() == 1)
+          CellLoops::for_each_node(nodes.active_nodes, f);
+        else
+          for (const unsigned int i : nodes.active_nodes)
+            f(i);
+      };
+      for_each_active_node([&](const unsigned int i) {
         phi[grid.base_node(i)] = vol[grid.base_node(i)] = 0.;
+      });
       // Copies of a cell have different colours, so the sums on base nodes
       // are race free; the colours of field f come after those of the
       // fields before it, so a cell counts its volume unless a copy in a
@@ -55,15 +65,14 @@ namespace fsgmpm
           }
       });
       // Divide each base node once (zeroing its volume marks it done).
-      for (const unsigned int i : nodes.active_nodes)
-        {
-          const unsigned int b = grid.base_node(i);
-          if (vol[b] > 0)
-            {
-              phi[b] /= vol[b];
-              vol[b] = 0;
-            }
-        }
+      for_each_active_node([&](const unsigned int i) {
+        const unsigned int b = grid.base_node(i);
+        if (vol[b] > 0)
+          {
+            phi[b] /= vol[b];
+            vol[b] = 0;
+          }
+      });
 
       // MPI: the nodal values on the rim of the ghost layer from their
       // owners, before the points read them back.

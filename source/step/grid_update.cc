@@ -1,4 +1,5 @@
 #include <fsgmpm/base/compensated_sum.h>
+#include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
 #include <cmath>
@@ -26,17 +27,24 @@ namespace fsgmpm
       // energy guard; the points' kinetic energy was 34 J).
       // Compensated, so that it does not depend on the order of the nodes
       // or on how they are split over processes (it steers the damping).
-      double mean_mass = 0;
+      // The loops over the nodes run in parallel, their sums in fixed
+      // chunks (CellLoops::compensated_sums): the same for any number of
+      // threads.
+      const auto &active    = nodes.active_nodes;
+      double      mean_mass = 0;
       if (alpha > 0)
         {
-          CompensatedSum total_mass;
-          double         n_nodes = 0;
-          for (const unsigned int i : nodes.active_nodes)
-            if (counted_nodes == nullptr || (*counted_nodes)[i])
-              {
-                total_mass.add(nodes.mass[i]);
-                n_nodes += 1;
-              }
+          const auto mass_and_count = CellLoops::compensated_sums<2>(
+            active.size(), [&](const unsigned int a, auto &sums) {
+              const unsigned int i = active[a];
+              if (counted_nodes == nullptr || (*counted_nodes)[i])
+                {
+                  sums[0].add(nodes.mass[i]);
+                  sums[1].add(1.);
+                }
+            });
+          const CompensatedSum &total_mass = mass_and_count[0];
+          double                n_nodes    = mass_and_count[1].value();
           if (communicator != nullptr)
             {
               // One collective for both (the count is exact in a double).
@@ -57,11 +65,12 @@ namespace fsgmpm
       const bool scaled = !nodes.added_mass.empty();
       // Nodes with (almost) no mass carry no information; the remap of
       // Eq. (20) gives them a velocity consistent with their particles.
-      for (const unsigned int i : nodes.active_nodes)
-        {
-          const double m = nodes.mass[i];
+      const auto sums = CellLoops::compensated_sums<4>(
+        active.size(), [&](const unsigned int a, auto &sums) {
+          const unsigned int i = active[a];
+          const double       m = nodes.mass[i];
           if (m <= 0)
-            continue;
+            return;
           // F_ext of Eq. (4): gravity, m_i g.
           const Tensor<1, dim> external = m * gravity;
           // v_old is the unconstrained mapped velocity, so that the
@@ -93,19 +102,23 @@ namespace fsgmpm
           nodes.acceleration[i] = (v_new - v_old) / dt;
 
           if (counted_nodes != nullptr && (*counted_nodes)[i] == 0)
-            continue;
+            return;
           const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
-          r.external_work_increment.add(dt * (external * v_mid));
+          sums[0].add(dt * (external * v_mid));
           if (m >= light)
-            r.damping_work_increment.add(-dt * (damping * v_mid));
+            sums[1].add(-dt * (damping * v_mid));
 
           Tensor<1, dim> free_unbalanced = unbalanced;
           Tensor<1, dim> free_external   = external;
           constraints.project_out(i, free_unbalanced);
           constraints.project_out(i, free_external);
-          r.unbalanced_norm_sq.add(free_unbalanced.norm_square());
-          r.external_norm_sq.add(free_external.norm_square());
-        }
+          sums[2].add(free_unbalanced.norm_square());
+          sums[3].add(free_external.norm_square());
+        });
+      r.external_work_increment = sums[0];
+      r.damping_work_increment  = sums[1];
+      r.unbalanced_norm_sq      = sums[2];
+      r.external_norm_sq        = sums[3];
       return r;
     }
 

@@ -27,9 +27,10 @@ namespace fsgmpm
       // Scratch kept between steps. The scatter below runs on worker
       // threads, where a thread_local names another thread's (empty)
       // vector: it writes through this reference.
-      thread_local std::vector<Tensor<1, dim>> updated_velocity;
+      thread_local std::vector<Tensor<1, dim>> updated_velocity_scratch;
       thread_local std::vector<double>         filled_volume_scratch;
-      std::vector<double> &filled_volume = filled_volume_scratch;
+      std::vector<Tensor<1, dim>> &updated_velocity = updated_velocity_scratch;
+      std::vector<double>         &filled_volume    = filled_volume_scratch;
       if (affine)
         {
           AssertThrow(grid.node_volume.size() == grid.n_nodes(),
@@ -39,14 +40,15 @@ namespace fsgmpm
                         "before the first step."));
           updated_velocity.resize(grid.n_nodes());
           filled_volume.resize(grid.n_nodes());
-          for (const unsigned int i : nodes.active_nodes)
-            {
-              updated_velocity[i] = nodes.velocity[i];
-              filled_volume[i]    = 0;
-            }
+          CellLoops::for_each_node(nodes.active_nodes,
+                                   [&](const unsigned int i) {
+                                     updated_velocity[i] = nodes.velocity[i];
+                                     filled_volume[i]    = 0;
+                                   });
         }
-      for (const unsigned int i : nodes.active_nodes)
+      CellLoops::for_each_node(nodes.active_nodes, [&](const unsigned int i) {
         nodes.momentum[i] = Tensor<1, dim>();
+      });
 
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         Tensor<1, dim>          mv[dim + 1];
@@ -74,7 +76,7 @@ namespace fsgmpm
 
       // Eq. (20) with the lumped mass matrix. Walls act kinematically only:
       // the friction impulse was applied once, in the grid update.
-      for (const unsigned int i : nodes.active_nodes)
+      CellLoops::for_each_node(nodes.active_nodes, [&](const unsigned int i) {
         if (nodes.mass[i] > 0)
           {
             nodes.velocity[i] = nodes.momentum[i] / nodes.mass[i];
@@ -87,6 +89,7 @@ namespace fsgmpm
               }
             constraints.apply_kinematic(i, nodes.velocity[i]);
           }
+      });
     }
 
     template void

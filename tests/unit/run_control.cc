@@ -17,7 +17,8 @@
 //   known state against the hand sums (exact to round-off, 1e-14
 //   relative), and the Eq. (30) ratios of a step.
 // - CompensatedSum: the monitors' sums over points agree to a few roundings
-//   whatever the order of the terms and however they are split.
+//   whatever the order of the terms and however they are split, and the
+//   parallel sums in chunks do not depend on the number of threads.
 
 #include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/materials/linear_elastic.h>
@@ -25,6 +26,7 @@
 #include <fsgmpm/run/energy_balance.h>
 #include <fsgmpm/run/output_schedule.h>
 #include <fsgmpm/run/time_step_control.h>
+#include <fsgmpm/step/cell_loops.h>
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
@@ -314,4 +316,58 @@ TEST(CompensatedSum, IndependentOfOrderAndSplit)
                                MPI_COMM_SELF)[0],
             forward.value());
   EXPECT_EQ(sum_over_processes(forward, MPI_COMM_SELF), forward.value());
+}
+
+
+
+// The loops over nodes and cells sum in parallel through
+// CellLoops::compensated_sums: fixed chunks of 512 items, merged in order.
+// The same terms on 1 and 2 threads give the same bits; the value agrees
+// with the serial compensated sum to a rounding or two (asserted: 4e-16 of
+// the sum, as above), and a sum of at most one chunk is the serial one bit
+// for bit.
+TEST(CompensatedSum, ChunkedInParallelIndependentOfThreads)
+{
+  std::vector<double> terms;
+  unsigned int        state = 54321;
+  for (unsigned int k = 0; k < 100000; ++k)
+    {
+      state          = 1664525u * state + 1013904223u;
+      const double r = (state >> 8) * (1. / (1u << 24));
+      terms.push_back((k % 2 ? -1. : 1.) * r * std::pow(10., int(k % 13) - 6));
+    }
+  const auto chunked = [&](const unsigned int n) {
+    return CellLoops::compensated_sums<2>(
+      n, [&](const unsigned int a, std::array<CompensatedSum, 2> &sums) {
+        sums[0].add(terms[a]);
+        sums[1].add(terms[a] * terms[a]);
+      });
+  };
+  const unsigned int threads = MultithreadInfo::n_threads();
+  MultithreadInfo::set_thread_limit(1);
+  const auto one_thread = chunked(terms.size());
+  MultithreadInfo::set_thread_limit(2);
+  ASSERT_EQ(MultithreadInfo::n_threads(), 2u);
+  const auto two_threads = chunked(terms.size());
+  MultithreadInfo::set_thread_limit(threads);
+  CompensatedSum serial[2];
+  for (const double t : terms)
+    {
+      serial[0].add(t);
+      serial[1].add(t * t);
+    }
+  for (unsigned int q = 0; q < 2; ++q)
+    {
+      EXPECT_EQ(one_thread[q].sum(), two_threads[q].sum());
+      EXPECT_EQ(one_thread[q].correction(), two_threads[q].correction());
+      EXPECT_NEAR(two_threads[q].value(),
+                  serial[q].value(),
+                  4e-16 * std::abs(serial[q].value()));
+    }
+  // One chunk: the serial sum itself.
+  CompensatedSum first;
+  for (unsigned int k = 0; k < 512; ++k)
+    first.add(terms[k]);
+  EXPECT_EQ(chunked(512)[0].sum(), first.sum());
+  EXPECT_EQ(chunked(512)[0].correction(), first.correction());
 }

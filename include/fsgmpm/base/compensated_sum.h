@@ -38,6 +38,15 @@ namespace fsgmpm
       s = t;
     }
 
+    /// Add another compensated sum (its sum, then its correction): the
+    /// merge of sums over consecutive ranges of terms.
+    void
+    add(const CompensatedSum &other)
+    {
+      add(other.s);
+      c += other.c;
+    }
+
     double
     sum() const
     {

@@ -2,6 +2,7 @@
 #define fsgmpm_grid_nodal_fields_h
 
 #include <deal.II/base/memory_consumption.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -47,23 +48,29 @@ namespace fsgmpm
     void
     reset_active()
     {
-      for (const unsigned int i : active_nodes)
-        {
-          mass[i]           = 0.;
-          momentum[i]       = Tensor<1, dim>();
-          internal_force[i] = Tensor<1, dim>();
-          velocity[i]       = Tensor<1, dim>();
-          acceleration[i]   = Tensor<1, dim>();
-        }
-      if (!added_mass.empty())
-        for (const unsigned int i : active_nodes)
-          added_mass[i] = SymmetricTensor<2, dim>();
-      if (!volume_stress.empty())
-        for (const unsigned int i : active_nodes)
-          {
-            volume_stress[i]  = Tensor<2, dim>();
-            support_volume[i] = 0.;
-          }
+      // In parallel (a serial loop here held back the second thread).
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(active_nodes.size()),
+        [this](const unsigned int b, const unsigned int e) {
+          for (unsigned int a = b; a < e; ++a)
+            {
+              const unsigned int i = active_nodes[a];
+              mass[i]              = 0.;
+              momentum[i]          = Tensor<1, dim>();
+              internal_force[i]    = Tensor<1, dim>();
+              velocity[i]          = Tensor<1, dim>();
+              acceleration[i]      = Tensor<1, dim>();
+              if (!added_mass.empty())
+                added_mass[i] = SymmetricTensor<2, dim>();
+              if (!volume_stress.empty())
+                {
+                  volume_stress[i]  = Tensor<2, dim>();
+                  support_volume[i] = 0.;
+                }
+            }
+        },
+        1024);
       active_nodes.clear();
       // A byte per node: when the stamp wraps, every node is unmarked once
       // (O(nodes) every 255 steps).

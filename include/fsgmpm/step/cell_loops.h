@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parallel.h>
 
+#include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/particles/particle_store.h>
 
@@ -22,6 +23,57 @@ namespace fsgmpm
                    const unsigned int grain = 256)
     {
       dealii::parallel::apply_to_subranges(0u, n, f, grain);
+    }
+
+    /// Call f(i) for every node i of @p node_list (the active nodes), in
+    /// parallel: for loops over nodes whose iterations touch only their own
+    /// node (a serial loop over the nodes held back the second thread).
+    template <typename Function>
+    void
+    for_each_node(const std::vector<unsigned int> &node_list, const Function &f)
+    {
+      parallel_range(
+        node_list.size(),
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int a = b; a < e; ++a)
+            f(node_list[a]);
+        },
+        1024);
+    }
+
+    /**
+     * N compensated sums over the items [0, n), in parallel: f(a, sums)
+     * adds item a's terms to sums[0..N-1]. The items are summed in fixed
+     * chunks of 512 (small enough to share among threads), in order, and the
+     * chunks' sums merged in order (CompensatedSum::add(const CompensatedSum
+     * &)), so the result does not depend on the number of threads.
+     */
+    template <unsigned int N, typename Function>
+    std::array<CompensatedSum, N>
+    compensated_sums(const unsigned int n, const Function &f)
+    {
+      constexpr unsigned int chunk    = 512;
+      const unsigned int     n_chunks = (n + chunk - 1) / chunk;
+      std::vector<std::array<CompensatedSum, N>> partial(n_chunks);
+      parallel_range(
+        n_chunks,
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int k = b; k < e; ++k)
+            {
+              // In a local, which the compiler can keep in registers.
+              std::array<CompensatedSum, N> sums;
+              for (unsigned int a = k * chunk; a < std::min(n, (k + 1) * chunk);
+                   ++a)
+                f(a, sums);
+              partial[k] = sums;
+            }
+        },
+        1);
+      std::array<CompensatedSum, N> sums;
+      for (const auto &p : partial)
+        for (unsigned int q = 0; q < N; ++q)
+          sums[q].add(p[q]);
+      return sums;
     }
 
     /**

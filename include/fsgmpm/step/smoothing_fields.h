@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/memory_consumption.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
@@ -74,8 +75,14 @@ namespace fsgmpm
           numerator[m].assign(n_nodes, 0.);
           denominator[m].assign(n_nodes, 0.);
         }
-      for (const unsigned int i : nodes)
-        numerator[m][i] = denominator[m][i] = 0.;
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(nodes.size()),
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int a = b; a < e; ++a)
+            numerator[m][nodes[a]] = denominator[m][nodes[a]] = 0.;
+        },
+        1024);
     }
 
     /// Nodal average of material m at node i (0 if nothing contributed).
