@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parallel.h>
 
+#include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/particles/particle_store.h>
 
 #include <algorithm>
@@ -99,6 +100,8 @@ namespace fsgmpm
   ParticleStore<dim>::sort_by_cell(const unsigned int n_cells)
   {
     const unsigned int n = size();
+    // The slots are numbered anew.
+    geometry_cache.clear();
     if (slot_of_cell.size() != n_cells)
       {
         // A fresh array: a window's after the whole grid's (a restart's
@@ -292,7 +295,21 @@ namespace fsgmpm
   void
   ParticleStore<dim>::keep_cell_ranges(const std::vector<unsigned int> &cells)
   {
-    // Renumber the kept cells' slots in their order (the slots of a sort).
+    // Renumber the kept cells' slots in their order (the slots of a sort),
+    // their cached geometry along.
+    if (!geometry_cache.empty())
+      {
+        std::vector<CellGeometry<dim>> kept;
+        kept.reserve(cells.size());
+        for (const unsigned int c : cells)
+          {
+            const CellGeometry<dim> *g = cached_geometry(c);
+            if (g == nullptr)
+              break;
+            kept.push_back(*g);
+          }
+        geometry_cache.swap(kept);
+      }
     slot_cursor.resize(2 * cells.size());
     for (unsigned int j = 0; j < cells.size(); ++j)
       {
@@ -310,6 +327,34 @@ namespace fsgmpm
         slot_end[j]            = slot_cursor[2 * j + 1];
       }
     occupied_cells = cells;
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::cache_cell_geometry(const BackgroundGrid<dim> &grid)
+  {
+    if (dim != 3 || occupied_cells.empty()
+        || geometry_cache.size() == occupied_cells.size())
+      return;
+    // One entry per slot. Slot j is not always occupied_cells[j]: the
+    // cells of MPI ghost copies get the slots after the sorted ones but
+    // are merged into occupied_cells in ascending order.
+    geometry_cache.resize(occupied_cells.size(),
+                          CellGeometry<dim>(grid.vertices(0)));
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(occupied_cells.size()),
+      [&](const unsigned int b, const unsigned int e) {
+        for (unsigned int i = b; i < e; ++i)
+          {
+            const unsigned int c = occupied_cells[i];
+            AssertIndexRange(slot_of_cell[c], geometry_cache.size());
+            geometry_cache[slot_of_cell[c]] = grid.geometry(c);
+          }
+      },
+      256);
   }
 
 
@@ -335,7 +380,8 @@ namespace fsgmpm
            + slot_begin.capacity() + slot_end.capacity()
            + order_scratch.capacity() + slot_cursor.capacity()
            + cycle_starts.capacity())
-            * sizeof(unsigned int);
+            * sizeof(unsigned int)
+        + geometry_cache.capacity() * sizeof(CellGeometry<dim>);
     return bytes / size();
   }
 

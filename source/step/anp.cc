@@ -89,7 +89,7 @@ namespace fsgmpm
             if (options[m].anp_interpolate)
               {
                 if (!geometry)
-                  geometry.emplace(grid.geometry(c));
+                  geometry.emplace(CellLoops::geometry(grid, particles, c));
                 const auto lambda
                   = geometry->barycentric(particles.position[p]);
                 p_bar = 0;

@@ -61,10 +61,11 @@ namespace fsgmpm
             }
           if (lower_copy_occupied)
             continue;
-          const unsigned int      cb       = grid.cell_in_field(c, 0);
-          const CellGeometry<dim> geometry = grid.geometry(cb);
-          const auto              grad     = geometry.shape_gradients();
-          Tensor<1, dim>          gradient;
+          const unsigned int      cb = grid.cell_in_field(c, 0);
+          const CellGeometry<dim> geometry
+            = CellLoops::geometry(grid, particles, cb);
+          const auto     grad = geometry.shape_gradients();
+          Tensor<1, dim> gradient;
           for (unsigned int k = 0; k < dim + 1; ++k)
             {
               const unsigned int i = grid.cell_nodes[cb][k];

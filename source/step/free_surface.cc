@@ -55,7 +55,8 @@ namespace fsgmpm
           first = first
                   && particles.occupied_slot(grid.cell_in_field(c, f))
                        == numbers::invalid_unsigned_int;
-        const double cell_volume = first ? grid.cell_volume(c) : 0.;
+        const double cell_volume
+          = first ? CellLoops::cell_volume(grid, particles, c) : 0.;
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int i = grid.base_node(grid.cell_nodes[c][k]);
@@ -85,8 +86,9 @@ namespace fsgmpm
         [&](const unsigned int b, const unsigned int e) {
           for (unsigned int ci = b; ci < e; ++ci)
             {
-              const unsigned int      c        = particles.occupied_cells[ci];
-              const CellGeometry<dim> geometry = grid.geometry(c);
+              const unsigned int      c = particles.occupied_cells[ci];
+              const CellGeometry<dim> geometry
+                = CellLoops::geometry(grid, particles, c);
               for (unsigned int p = particles.cell_begin(c);
                    p < particles.cell_end(c);
                    ++p)

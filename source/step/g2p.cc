@@ -25,7 +25,8 @@ namespace fsgmpm
       const auto &field = apic ? nodes.velocity : nodes.acceleration;
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         Tensor<1, dim>          f[dim + 1], v[dim + 1];
-        const CellGeometry<dim> geometry = grid.geometry(c);
+        const CellGeometry<dim> geometry
+          = CellLoops::geometry(grid, particles, c);
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             f[k] = field[grid.cell_nodes[c][k]];

@@ -116,6 +116,9 @@ namespace fsgmpm
   {
     {
       TimerOutput::Scope scope(timer, "p2g");
+      // 3D: every stage of the step reads the occupied cells' geometry
+      // from here (nothing to do if stable_time_step() computed it).
+      particles.cache_cell_geometry(grid);
       Stages::p2g(grid, particles, nodes, settings.stress_integration, [&]() {
         if (partition != nullptr)
           {
@@ -153,6 +156,9 @@ namespace fsgmpm
     double dt;
     {
       TimerOutput::Scope scope(timer, "time_step");
+      // The first stage of a step on the points of the last sort: the
+      // occupied cells' geometry once for the whole step (3D).
+      particles.cache_cell_geometry(grid);
       dt = Stages::stable_time_step(grid,
                                     particles,
                                     materials,

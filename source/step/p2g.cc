@@ -31,7 +31,8 @@ namespace fsgmpm
         Tensor<2, dim>          volume_stress;
         Tensor<2, dim>          nodal_volume_stress[dim + 1];
         double                  points_volume = 0;
-        const CellGeometry<dim> geometry      = grid.geometry(c);
+        const CellGeometry<dim> geometry
+          = CellLoops::geometry(grid, particles, c);
         for (unsigned int p = particles.cell_begin(c);
              p < particles.cell_end(c);
              ++p)
@@ -101,7 +102,8 @@ namespace fsgmpm
         Tensor<2, dim> cell_stress;
         for (const unsigned int n : grid.cell_nodes[c])
           cell_stress += nodes.volume_stress[n] / nodes.support_volume[n];
-        const CellGeometry<dim> geometry = grid.geometry(c);
+        const CellGeometry<dim> geometry
+          = CellLoops::geometry(grid, particles, c);
         cell_stress *= theta * geometry.volume / (dim + 1);
         const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)

@@ -21,9 +21,10 @@ namespace fsgmpm
         [&](const unsigned int b, const unsigned int e) {
           for (unsigned int i = b; i < e; ++i)
             {
-              const unsigned int      c        = cells[i];
-              const CellGeometry<dim> geometry = grid.geometry(c);
-              Tensor<1, dim>          v[dim + 1];
+              const unsigned int      c = cells[i];
+              const CellGeometry<dim> geometry
+                = CellLoops::geometry(grid, particles, c);
+              Tensor<1, dim> v[dim + 1];
               for (unsigned int k = 0; k < dim + 1; ++k)
                 v[k] = nodes.velocity[grid.cell_nodes[c][k]];
               double max_disp = 0;

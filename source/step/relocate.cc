@@ -25,7 +25,7 @@ namespace fsgmpm
               const unsigned int c = particles.cell[p];
               if (c != cached)
                 {
-                  geometry.emplace(grid.geometry(c));
+                  geometry.emplace(CellLoops::geometry(grid, particles, c));
                   cached = c;
                 }
               particles.cell[p]

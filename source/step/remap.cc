@@ -52,7 +52,8 @@ namespace fsgmpm
 
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         Tensor<1, dim>          mv[dim + 1];
-        const CellGeometry<dim> geometry = grid.geometry(c);
+        const CellGeometry<dim> geometry
+          = CellLoops::geometry(grid, particles, c);
         for (unsigned int p = particles.cell_begin(c);
              p < particles.cell_end(c);
              ++p)

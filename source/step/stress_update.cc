@@ -53,7 +53,7 @@ namespace fsgmpm
           = per_point ? CellLoops::projection_share(grid, particles, c) : 0.;
         std::optional<CellGeometry<dim>> geometry;
         if (per_point)
-          geometry.emplace(grid.geometry(c));
+          geometry.emplace(CellLoops::geometry(grid, particles, c));
         thread_local std::vector<PointKinematics> kinematics;
         const unsigned int begin = particles.cell_begin(c);
         const unsigned int end   = particles.cell_end(c);

@@ -24,9 +24,10 @@ namespace fsgmpm
         [&](const unsigned int b, const unsigned int e) {
           for (unsigned int i = b; i < e; ++i)
             {
-              const unsigned int c     = cells[i];
-              const double       h     = grid.min_altitude(c);
-              double             speed = 0, stiffness = 0;
+              const unsigned int c = cells[i];
+              const double       h
+                = CellLoops::geometry(grid, particles, c).min_altitude();
+              double speed = 0, stiffness = 0;
               for (unsigned int p = particles.cell_begin(c);
                    p < particles.cell_end(c);
                    ++p)

@@ -47,7 +47,7 @@ namespace fsgmpm
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         const Tensor<2, dim> share
           = (CellLoops::projection_share(grid, particles, c)
-             * grid.cell_volume(c) / (dim + 1))
+             * CellLoops::cell_volume(grid, particles, c) / (dim + 1))
             * smoothing.cell_velocity_gradient(c);
         for (const unsigned int n : grid.cell_nodes[c])
           Lbar[n] += share;

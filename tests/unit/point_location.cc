@@ -10,6 +10,7 @@
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/particles/body_shape.h>
+#include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/particles/polygon_inside.h>
 #include <gtest/gtest.h>
@@ -574,4 +575,89 @@ TEST(PolygonShape, SelfIntersectionAsATestOfAllPairs)
   // Both kinds were tried.
   EXPECT_GT(n_crossing, 100u);
   EXPECT_GT(n_simple, 100u);
+}
+
+
+
+// ParticleStore::cache_cell_geometry() (3D): each occupied cell's cached
+// geometry is the one BackgroundGrid::geometry() computes, bit for bit,
+// after a sort, after keep_cell_ranges() drops cells (slots renumbered)
+// and with MPI-like cells appended after the sorted ones but merged into
+// occupied_cells in order (their slots are not their places there); a
+// sort forgets it. In 2D nothing is cached.
+TEST(ParticleStore, CachedGeometryIsTheCellsOwn)
+{
+  const BackgroundGrid<3> grid(
+    MeshGeneration::box_simplices(Point<3>(0, 0, 0),
+                                  Point<3>(1.2, 0.5, 0.3),
+                                  std::vector<unsigned int>{6, 5, 3}));
+  const auto expect_cached = [&](const ParticleStore<3> &ps) {
+    for (const unsigned int c : ps.occupied_cells)
+      {
+        const CellGeometry<3> *g = ps.cached_geometry(c);
+        ASSERT_NE(g, nullptr) << "cell " << c;
+        const CellGeometry<3> own = grid.geometry(c);
+        EXPECT_EQ(g->x0, own.x0) << "cell " << c;
+        EXPECT_EQ(g->inverse_edges, own.inverse_edges) << "cell " << c;
+        EXPECT_EQ(g->volume, own.volume) << "cell " << c;
+      }
+  };
+  const auto centre = [&](const unsigned int c) {
+    Point<3> x;
+    for (const auto &v : grid.vertices(c))
+      x += v / 4.;
+    return x;
+  };
+  // Two points in every third cell, added from the last cell down.
+  ParticleStore<3> ps;
+  for (unsigned int c = grid.n_cells(); c-- > 0;)
+    if (c % 3 == 0)
+      for (unsigned int k = 0; k < 2; ++k)
+        ps.add(centre(c), c, 1., 1., {}, {}, 0, 0);
+  ps.sort_by_cell(grid.n_cells());
+  EXPECT_EQ(ps.cached_geometry(ps.occupied_cells[0]), nullptr);
+  ps.cache_cell_geometry(grid);
+  expect_cached(ps);
+  // Keep every other occupied cell: new slots, the cache along.
+  std::vector<unsigned int> kept;
+  for (unsigned int i = 0; i < ps.occupied_cells.size(); i += 2)
+    kept.push_back(ps.occupied_cells[i]);
+  ps.keep_cell_ranges(kept);
+  expect_cached(ps);
+  // Cells appended after the sorted ones (as DistributedPoints::add_ghosts
+  // does) have slots at the end but places in the middle of
+  // occupied_cells: not cached yet, then cached by their slots.
+  std::vector<unsigned int> added;
+  for (unsigned int c = 1; c < grid.n_cells(); c += 7)
+    if (ps.occupied_slot(c) == numbers::invalid_unsigned_int
+        && ps.cell_end(c) == 0)
+      {
+        const unsigned int begin = ps.size();
+        ps.add(centre(c), c, 1., 1., {}, {}, 0, 0);
+        ps.append_cell_range(c, begin, ps.size());
+        added.push_back(c);
+      }
+  ASSERT_GT(added.size(), 10u);
+  std::vector<unsigned int> merged;
+  std::merge(ps.occupied_cells.begin(),
+             ps.occupied_cells.end(),
+             added.begin(),
+             added.end(),
+             std::back_inserter(merged));
+  ps.occupied_cells.swap(merged);
+  EXPECT_EQ(ps.cached_geometry(added[0]), nullptr);
+  ps.cache_cell_geometry(grid);
+  expect_cached(ps);
+  ps.sort_by_cell(grid.n_cells());
+  for (const unsigned int c : ps.occupied_cells)
+    EXPECT_EQ(ps.cached_geometry(c), nullptr);
+
+  // 2D: nothing cached.
+  const BackgroundGrid<2> grid_2d(MeshGeneration::box_simplices(
+    Point<2>(0, 0), Point<2>(1, 1), std::vector<unsigned int>{4, 4}));
+  ParticleStore<2>        ps_2d;
+  ps_2d.add(Point<2>(0.1, 0.1), 0, 1., 1., {}, {}, 0, 0);
+  ps_2d.sort_by_cell(grid_2d.n_cells());
+  ps_2d.cache_cell_geometry(grid_2d);
+  EXPECT_EQ(ps_2d.cached_geometry(0), nullptr);
 }

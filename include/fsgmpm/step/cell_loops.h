@@ -25,6 +25,36 @@ namespace fsgmpm
       dealii::parallel::apply_to_subranges(0u, n, f, grain);
     }
 
+    /// The geometry of cell @p c: the points' cached one
+    /// (ParticleStore::cache_cell_geometry(), 3D) if they have it, else
+    /// computed from the cell's vertices. The same bits either way.
+    template <int dim>
+    inline CellGeometry<dim>
+    geometry(const BackgroundGrid<dim> &grid,
+             const ParticleStore<dim>  &particles,
+             const unsigned int         c)
+    {
+      // Only 3D caches (ParticleStore::cache_cell_geometry()): in 2D the
+      // vertices' geometry, inlined as before.
+      if constexpr (dim == 3)
+        if (const CellGeometry<dim> *cached = particles.cached_geometry(c))
+          return *cached;
+      return grid.geometry(c);
+    }
+
+    /// The volume of cell @p c, from its cached geometry if it has one.
+    template <int dim>
+    inline double
+    cell_volume(const BackgroundGrid<dim> &grid,
+                const ParticleStore<dim>  &particles,
+                const unsigned int         c)
+    {
+      if constexpr (dim == 3)
+        if (const CellGeometry<dim> *cached = particles.cached_geometry(c))
+          return cached->volume;
+      return grid.cell_volume(c);
+    }
+
     /// Call f(i) for every node i of @p node_list (the active nodes), in
     /// parallel: for loops over nodes whose iterations touch only their own
     /// node (a serial loop over the nodes held back the second thread).
@@ -132,8 +162,9 @@ namespace fsgmpm
                   const ParticleStore<dim>  &particles,
                   const unsigned int         c)
     {
-      std::array<double, dim + 1> share    = {};
-      const CellGeometry<dim>     geometry = grid.geometry(c);
+      std::array<double, dim + 1> share = {};
+      const CellGeometry<dim>     geometry
+        = CellLoops::geometry(grid, particles, c);
       for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
            ++p)
         {
@@ -171,7 +202,7 @@ namespace fsgmpm
            ++p)
         if (options[particles.material_id[p]].capped_weights && counts(p))
           scale[particles.material_id[p]] += particles.volume[p];
-      const double cell_volume = grid.cell_volume(c);
+      const double cell_volume = CellLoops::cell_volume(grid, particles, c);
       for (unsigned int m = 0; m < options.size(); ++m)
         scale[m] = (options[m].capped_weights && scale[m] > 0)
                      ? std::min(1., cell_volume / scale[m])
@@ -207,7 +238,8 @@ namespace fsgmpm
       for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
            ++p)
         volume += particles.volume[p];
-      return projection_share(volume, grid.cell_volume(c));
+      return projection_share(volume,
+                              CellLoops::cell_volume(grid, particles, c));
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).
