@@ -38,7 +38,11 @@ def main():
     p.add_argument("--pairs", type=int, default=3)
     p.add_argument("--set", action="append", default=[])
     args = p.parse_args()
-    out = tempfile.mkdtemp(prefix="ab_stages_")
+    with tempfile.TemporaryDirectory(prefix="ab_stages_") as out:
+        compare(args, out)
+
+
+def compare(args, out):
     for t in args.threads:
         results = {"a": [], "b": []}
         for i in range(args.pairs):
