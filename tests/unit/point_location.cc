@@ -275,6 +275,28 @@ TEST(BoxGrid, BadBoxesAreRefused)
     }
   line.cells = {{{0, 1, 3}}};
   EXPECT_THROW(BackgroundGrid<2> grid(line), ExceptionBase);
+
+  // Three triangles on one edge (a mesh that is not conforming): a clear
+  // error, not a neighbour picked at random.
+  MeshGeneration::SimplexMesh<2> fan;
+  fan.vertices = {Point<2>(0, 0),
+                  Point<2>(1, 0),
+                  Point<2>(0.5, 1),
+                  Point<2>(0.5, -1),
+                  Point<2>(0.5, 2)};
+  fan.cells    = {{{0, 1, 2}}, {{0, 1, 3}}, {{0, 1, 4}}};
+  try
+    {
+      const BackgroundGrid<2> grid(fan);
+      ADD_FAILURE() << "a face of three cells was accepted";
+    }
+  catch (const ExceptionBase &e)
+    {
+      EXPECT_NE(std::string(e.what()).find(
+                  "cell 0 is shared by more than two cells"),
+                std::string::npos)
+        << e.what();
+    }
 }
 
 
