@@ -341,8 +341,7 @@ namespace fsgmpm
     // One entry per slot. Slot j is not always occupied_cells[j]: the
     // cells of MPI ghost copies get the slots after the sorted ones but
     // are merged into occupied_cells in ascending order.
-    geometry_cache.resize(occupied_cells.size(),
-                          CellGeometry<dim>(grid.vertices(0)));
+    geometry_cache.resize(occupied_cells.size());
     parallel::apply_to_subranges(
       0u,
       static_cast<unsigned int>(occupied_cells.size()),

@@ -265,6 +265,27 @@ TEST(EnergyBalance, EnergiesAndRelaxationRatios)
 
 
 
+namespace
+{
+  // 10^5 pseudo-random terms of alternating sign and magnitudes 1e-6 to 1e6
+  // (a linear congruential generator from @p seed).
+  std::vector<double>
+  alternating_terms(unsigned int seed)
+  {
+    std::vector<double> terms;
+    for (unsigned int k = 0; k < 100000; ++k)
+      {
+        seed           = 1664525u * seed + 1013904223u;
+        const double r = (seed >> 8) * (1. / (1u << 24));
+        terms.push_back((k % 2 ? -1. : 1.) * r
+                        * std::pow(10., int(k % 13) - 6));
+      }
+    return terms;
+  }
+} // namespace
+
+
+
 // The monitors' sums over points (energies, body masses, the geotube's
 // pressure fit) are compensated so that they do not depend on the order of
 // the points nor on how they are split over MPI processes. 10^5 terms of
@@ -276,14 +297,7 @@ TEST(EnergyBalance, EnergiesAndRelaxationRatios)
 // (asserted: 4e-16).
 TEST(CompensatedSum, IndependentOfOrderAndSplit)
 {
-  std::vector<double> terms;
-  unsigned int        state = 12345;
-  for (unsigned int k = 0; k < 100000; ++k)
-    {
-      state          = 1664525u * state + 1013904223u;
-      const double r = (state >> 8) * (1. / (1u << 24));
-      terms.push_back((k % 2 ? -1. : 1.) * r * std::pow(10., int(k % 13) - 6));
-    }
+  const std::vector<double> terms = alternating_terms(12345);
 
   double         plain_forward = 0, plain_backward = 0;
   CompensatedSum forward, backward;
@@ -328,15 +342,8 @@ TEST(CompensatedSum, IndependentOfOrderAndSplit)
 // for bit.
 TEST(CompensatedSum, ChunkedInParallelIndependentOfThreads)
 {
-  std::vector<double> terms;
-  unsigned int        state = 54321;
-  for (unsigned int k = 0; k < 100000; ++k)
-    {
-      state          = 1664525u * state + 1013904223u;
-      const double r = (state >> 8) * (1. / (1u << 24));
-      terms.push_back((k % 2 ? -1. : 1.) * r * std::pow(10., int(k % 13) - 6));
-    }
-  const auto chunked = [&](const unsigned int n) {
+  const std::vector<double> terms   = alternating_terms(54321);
+  const auto                chunked = [&](const unsigned int n) {
     return CellLoops::compensated_sums<2>(
       n, [&](const unsigned int a, std::array<CompensatedSum, 2> &sums) {
         sums[0].add(terms[a]);

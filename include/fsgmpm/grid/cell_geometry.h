@@ -31,6 +31,9 @@ namespace fsgmpm
   template <int dim>
   struct CellGeometry
   {
+    /// Zero (room in an array, e.g. ParticleStore's cache, filled later).
+    CellGeometry() = default;
+
     /// From the vertices; the same arithmetic wherever a cell's geometry is
     /// needed, so every loop sees the same bits.
     CellGeometry(const std::array<Point<dim>, dim + 1> &x)
@@ -104,7 +107,7 @@ namespace fsgmpm
 
     Point<dim>     x0;
     Tensor<2, dim> inverse_edges;
-    double         volume;
+    double         volume = 0;
   };
 } // namespace fsgmpm
 
