@@ -207,21 +207,12 @@ namespace fsgmpm
     // The cells around every node (CSR), in this grid's numbers: a whole
     // grid or a window. A window holds every cell around a node of our own
     // cells, so what follows is the same in both for those nodes.
-    const unsigned int        n_cells = grid.n_cells();
-    const unsigned int        n_nodes = grid.n_nodes();
-    std::vector<unsigned int> start(n_nodes + 1, 0), cells;
-    for (unsigned int c = 0; c < n_cells; ++c)
-      for (const unsigned int i : grid.cell_nodes[c])
-        ++start[i + 1];
-    for (unsigned int i = 0; i < n_nodes; ++i)
-      start[i + 1] += start[i];
-    cells.resize(start[n_nodes]);
-    {
-      std::vector<unsigned int> fill(start.begin(), start.end() - 1);
-      for (unsigned int c = 0; c < n_cells; ++c)
-        for (const unsigned int i : grid.cell_nodes[c])
-          cells[fill[i]++] = c;
-    }
+    const unsigned int n_cells = grid.n_cells();
+    const unsigned int n_nodes = grid.n_nodes();
+    const typename BackgroundGrid<dim>::CellsAroundNodes around_nodes
+      = grid.cells_around_nodes();
+    const std::vector<unsigned int> &start = around_nodes.start;
+    const std::vector<unsigned int> &cells = around_nodes.cells;
 
     // A process holds cell c (owned or ghost) if it owns a cell that shares
     // a vertex with c.

@@ -335,7 +335,7 @@ namespace fsgmpm
   void
   ParticleStore<dim>::cache_cell_geometry(const BackgroundGrid<dim> &grid)
   {
-    if (dim != 3 || occupied_cells.empty()
+    if (!caches_geometry || occupied_cells.empty()
         || geometry_cache.size() == occupied_cells.size())
       return;
     // One entry per slot. Slot j is not always occupied_cells[j]: the

@@ -36,7 +36,7 @@ namespace fsgmpm
       // once: the loops over them run in parallel.
       const auto for_each_active_node = [&](const auto &f) {
         if (grid.n_velocity_fields() == 1)
-          CellLoops::for_each_node(nodes.active_nodes, f);
+          for_each_node(nodes.active_nodes, f);
         else
           for (const unsigned int i : nodes.active_nodes)
             f(i);

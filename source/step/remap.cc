@@ -40,13 +40,12 @@ namespace fsgmpm
                         "before the first step."));
           updated_velocity.resize(grid.n_nodes());
           filled_volume.resize(grid.n_nodes());
-          CellLoops::for_each_node(nodes.active_nodes,
-                                   [&](const unsigned int i) {
-                                     updated_velocity[i] = nodes.velocity[i];
-                                     filled_volume[i]    = 0;
-                                   });
+          for_each_node(nodes.active_nodes, [&](const unsigned int i) {
+            updated_velocity[i] = nodes.velocity[i];
+            filled_volume[i]    = 0;
+          });
         }
-      CellLoops::for_each_node(nodes.active_nodes, [&](const unsigned int i) {
+      for_each_node(nodes.active_nodes, [&](const unsigned int i) {
         nodes.momentum[i] = Tensor<1, dim>();
       });
 
@@ -77,7 +76,7 @@ namespace fsgmpm
 
       // Eq. (20) with the lumped mass matrix. Walls act kinematically only:
       // the friction impulse was applied once, in the grid update.
-      CellLoops::for_each_node(nodes.active_nodes, [&](const unsigned int i) {
+      for_each_node(nodes.active_nodes, [&](const unsigned int i) {
         if (nodes.mass[i] > 0)
           {
             nodes.velocity[i] = nodes.momentum[i] / nodes.mass[i];

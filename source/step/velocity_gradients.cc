@@ -41,9 +41,8 @@ namespace fsgmpm
       auto &Lbar = smoothing.nodal_velocity_gradient;
       if (Lbar.size() != grid.n_nodes())
         Lbar.assign(grid.n_nodes(), Tensor<2, dim>());
-      CellLoops::for_each_node(nodes.active_nodes, [&](const unsigned int i) {
-        Lbar[i] = Tensor<2, dim>();
-      });
+      for_each_node(nodes.active_nodes,
+                    [&](const unsigned int i) { Lbar[i] = Tensor<2, dim>(); });
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         const Tensor<2, dim> share
           = (CellLoops::projection_share(grid, particles, c)

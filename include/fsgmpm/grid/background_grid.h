@@ -311,6 +311,18 @@ namespace fsgmpm
                      const double       tolerance,
                      const unsigned int start) const;
 
+    /// The cells around each node, as one list with offsets: the cells
+    /// around node i are cells[start[i]], ..., cells[start[i + 1] - 1], in
+    /// ascending order (a temporary: the neighbours and an MPI partition's
+    /// ghost layer are built from it, 4 B per cell and vertex).
+    struct CellsAroundNodes
+    {
+      std::vector<unsigned int> start, cells;
+    };
+
+    CellsAroundNodes
+    cells_around_nodes() const;
+
     /// Bytes held by the per-cell and per-node arrays.
     std::size_t
     memory_consumption() const;

@@ -14,6 +14,24 @@ namespace fsgmpm
 {
   using namespace dealii;
 
+  /// Call f(i) for every node i of @p node_list (e.g. the active nodes) in
+  /// parallel: for loops over nodes whose iterations touch only their own
+  /// node (serial, such loops between the parallel stages held back the
+  /// second thread).
+  template <typename Function>
+  void
+  for_each_node(const std::vector<unsigned int> &node_list, const Function &f)
+  {
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(node_list.size()),
+      [&](const unsigned int b, const unsigned int e) {
+        for (unsigned int a = b; a < e; ++a)
+          f(node_list[a]);
+      },
+      1024);
+  }
+
   /**
    * Lumped nodal quantities of the background grid. Only the nodes of cells
    * that hold material ("active nodes") are reset and updated each step, so
@@ -48,29 +66,20 @@ namespace fsgmpm
     void
     reset_active()
     {
-      // In parallel (a serial loop here held back the second thread).
-      parallel::apply_to_subranges(
-        0u,
-        static_cast<unsigned int>(active_nodes.size()),
-        [this](const unsigned int b, const unsigned int e) {
-          for (unsigned int a = b; a < e; ++a)
-            {
-              const unsigned int i = active_nodes[a];
-              mass[i]              = 0.;
-              momentum[i]          = Tensor<1, dim>();
-              internal_force[i]    = Tensor<1, dim>();
-              velocity[i]          = Tensor<1, dim>();
-              acceleration[i]      = Tensor<1, dim>();
-              if (!added_mass.empty())
-                added_mass[i] = SymmetricTensor<2, dim>();
-              if (!volume_stress.empty())
-                {
-                  volume_stress[i]  = Tensor<2, dim>();
-                  support_volume[i] = 0.;
-                }
-            }
-        },
-        1024);
+      for_each_node(active_nodes, [this](const unsigned int i) {
+        mass[i]           = 0.;
+        momentum[i]       = Tensor<1, dim>();
+        internal_force[i] = Tensor<1, dim>();
+        velocity[i]       = Tensor<1, dim>();
+        acceleration[i]   = Tensor<1, dim>();
+        if (!added_mass.empty())
+          added_mass[i] = SymmetricTensor<2, dim>();
+        if (!volume_stress.empty())
+          {
+            volume_stress[i]  = Tensor<2, dim>();
+            support_volume[i] = 0.;
+          }
+      });
       active_nodes.clear();
       // A byte per node: when the stamp wraps, every node is unmarked once
       // (O(nodes) every 255 steps).

@@ -141,6 +141,9 @@ namespace fsgmpm
     void
     cache_cell_geometry(const BackgroundGrid<dim> &grid);
 
+    /// Whether cache_cell_geometry() caches (3D only, above).
+    static constexpr bool caches_geometry = (dim == 3);
+
     /// The cached geometry of cell @p c (cache_cell_geometry()), or
     /// nullptr if it has none.
     const CellGeometry<dim> *

@@ -34,9 +34,9 @@ namespace fsgmpm
              const ParticleStore<dim>  &particles,
              const unsigned int         c)
     {
-      // Only 3D caches (ParticleStore::cache_cell_geometry()): in 2D the
-      // vertices' geometry, inlined as before.
-      if constexpr (dim == 3)
+      // Without a cache (2D) the vertices' geometry, inlined, with no
+      // lookup.
+      if constexpr (ParticleStore<dim>::caches_geometry)
         if (const CellGeometry<dim> *cached = particles.cached_geometry(c))
           return *cached;
       return grid.geometry(c);
@@ -49,26 +49,10 @@ namespace fsgmpm
                 const ParticleStore<dim>  &particles,
                 const unsigned int         c)
     {
-      if constexpr (dim == 3)
+      if constexpr (ParticleStore<dim>::caches_geometry)
         if (const CellGeometry<dim> *cached = particles.cached_geometry(c))
           return cached->volume;
       return grid.cell_volume(c);
-    }
-
-    /// Call f(i) for every node i of @p node_list (the active nodes), in
-    /// parallel: for loops over nodes whose iterations touch only their own
-    /// node (a serial loop over the nodes held back the second thread).
-    template <typename Function>
-    void
-    for_each_node(const std::vector<unsigned int> &node_list, const Function &f)
-    {
-      parallel_range(
-        node_list.size(),
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int a = b; a < e; ++a)
-            f(node_list[a]);
-        },
-        1024);
     }
 
     /**

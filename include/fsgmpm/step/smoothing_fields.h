@@ -3,10 +3,10 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/memory_consumption.h>
-#include <deal.II/base/parallel.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/particles/particle_store.h>
 
 #include <vector>
@@ -66,23 +66,17 @@ namespace fsgmpm
     }
 
     /// Make sure material m has nodal arrays and zero them on @p nodes.
-    template <typename NodeList>
     void
-    reset(const unsigned int m, const NodeList &nodes)
+    reset(const unsigned int m, const std::vector<unsigned int> &nodes)
     {
       if (numerator[m].size() != n_nodes)
         {
           numerator[m].assign(n_nodes, 0.);
           denominator[m].assign(n_nodes, 0.);
         }
-      parallel::apply_to_subranges(
-        0u,
-        static_cast<unsigned int>(nodes.size()),
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int a = b; a < e; ++a)
-            numerator[m][nodes[a]] = denominator[m][nodes[a]] = 0.;
-        },
-        1024);
+      for_each_node(nodes, [&](const unsigned int i) {
+        numerator[m][i] = denominator[m][i] = 0.;
+      });
     }
 
     /// Nodal average of material m at node i (0 if nothing contributed).
