@@ -29,16 +29,20 @@ namespace fsgmpm
           cells.size(), [&](const unsigned int i, auto &sums) {
             const unsigned int c = cells[i];
             double             k = 0, s = 0, g = 0;
-            for (unsigned int p = particles.cell_begin(c);
-                 p < particles.cell_end(c);
-                 ++p)
+            const unsigned int end = particles.cell_end(c);
+            for (unsigned int p = particles.cell_begin(c); p < end;)
               {
-                k += 0.5 * particles.mass[p]
-                     * particles.velocity[p].norm_square();
-                s += particles.volume[p]
-                     * materials[particles.material_id[p]]
-                         ->strain_energy_density(particles.stress[p]);
-                g -= particles.mass[p] * (gravity * particles.position[p]);
+                // A run of points of one material: its lookup once.
+                const auto      m   = particles.material_id[p];
+                const Material &mat = *materials[m];
+                for (; p < end && particles.material_id[p] == m; ++p)
+                  {
+                    k += 0.5 * particles.mass[p]
+                         * particles.velocity[p].norm_square();
+                    s += particles.volume[p]
+                         * mat.strain_energy_density(particles.stress[p]);
+                    g -= particles.mass[p] * (gravity * particles.position[p]);
+                  }
               }
             sums[0].add(k);
             sums[1].add(s);

@@ -27,22 +27,29 @@ namespace fsgmpm
               const unsigned int c = cells[i];
               const double       h
                 = CellLoops::geometry(grid, particles, c).min_altitude();
-              double speed = 0, stiffness = 0;
-              for (unsigned int p = particles.cell_begin(c);
-                   p < particles.cell_end(c);
-                   ++p)
+              double             speed = 0, stiffness = 0;
+              const unsigned int end = particles.cell_end(c);
+              for (unsigned int p = particles.cell_begin(c); p < end;)
                 {
-                  const double    rho = particles.mass[p] / particles.volume[p];
-                  const Material &mat = *materials[particles.material_id[p]];
-                  // Wave speed, advection, and the viscous limit 2 d nu/h
-                  // folded into one signal speed.
-                  const double s = mat.wave_speed(rho)
-                                   + particles.velocity[p].norm()
-                                   + 2. * dim * mat.viscosity() / (rho * h);
-                  speed = std::max(speed, s);
-                  // V_p M_p with the P-wave modulus M_p = rho s^2 of the
-                  // same signal speed, for the nodal bound.
-                  stiffness += particles.volume[p] * rho * s * s;
+                  // A run of points of one material: its viscous term's
+                  // numerator once, not a second virtual call per point.
+                  const auto      m       = particles.material_id[p];
+                  const Material &mat     = *materials[m];
+                  const double    viscous = 2. * dim * mat.viscosity();
+                  for (; p < end && particles.material_id[p] == m; ++p)
+                    {
+                      const double rho
+                        = particles.mass[p] / particles.volume[p];
+                      // Wave speed, advection, and the viscous limit
+                      // 2 d nu/h folded into one signal speed.
+                      const double s = mat.wave_speed(rho)
+                                       + particles.velocity[p].norm()
+                                       + viscous / (rho * h);
+                      speed = std::max(speed, s);
+                      // V_p M_p with the P-wave modulus M_p = rho s^2 of the
+                      // same signal speed, for the nodal bound.
+                      stiffness += particles.volume[p] * rho * s * s;
+                    }
                 }
               cell_dt[i]
                 = (speed > 0) ? h / speed : std::numeric_limits<double>::max();
