@@ -4,6 +4,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace fsgmpm
@@ -19,9 +21,9 @@ namespace fsgmpm
      * its entries, and process 0 returns an array of @p n_global values in
      * which @p combine(result[index[k]], values[k]) has run for every entry
      * sent, in the order of the processes; the others return an empty
-     * array. No process but 0 holds a whole-grid-sized array. The counts
-     * are ints: at most 2^31 - 1 entries (and bytes of values) per
-     * process.
+     * array. No process but 0 holds a whole-grid-sized array. MPI counts
+     * are ints: all processes together may send at most 2^31 - 1 entries
+     * (counted in entries, not bytes), which process 0 checks.
      */
     template <typename T, typename Combine>
     std::vector<T>
@@ -32,17 +34,25 @@ namespace fsgmpm
                    const Combine                   &combine)
     {
       AssertDimension(index.size(), values.size());
+      AssertThrow(index.size() <= std::numeric_limits<int>::max(),
+                  ExcMessage("gather_to_root: more than 2^31 - 1 entries on "
+                             "one process."));
       const bool       root = Utilities::MPI::this_mpi_process(comm) == 0;
       const int        n    = index.size();
       std::vector<int> n_of(root ? Utilities::MPI::n_mpi_processes(comm) : 0);
       int ierr = MPI_Gather(&n, 1, MPI_INT, n_of.data(), 1, MPI_INT, 0, comm);
       AssertThrowMPI(ierr);
-      std::vector<int> start(n_of.size() + 1, 0), byte_count, byte_start;
+      // The offsets are ints too: their total is checked in 64 bits.
+      std::vector<int> start(n_of.size() + 1, 0);
+      std::int64_t     total = 0;
       for (unsigned int q = 0; q < n_of.size(); ++q)
         {
-          start[q + 1] = start[q] + n_of[q];
-          byte_count.push_back(n_of[q] * sizeof(T));
-          byte_start.push_back(start[q] * sizeof(T));
+          total += n_of[q];
+          AssertThrow(total <= std::numeric_limits<int>::max(),
+                      ExcMessage("gather_to_root: the processes send more "
+                                 "than 2^31 - 1 entries to process 0 in "
+                                 "total."));
+          start[q + 1] = total;
         }
       std::vector<unsigned int> all_index(start.back());
       std::vector<T>            all_values(start.back());
@@ -56,15 +66,24 @@ namespace fsgmpm
                          0,
                          comm);
       AssertThrowMPI(ierr);
+      // The values as one MPI type of sizeof(T) bytes, so that the counts
+      // are entries, not bytes (which would pass 2^31 eight times sooner).
+      MPI_Datatype entry;
+      ierr = MPI_Type_contiguous(sizeof(T), MPI_BYTE, &entry);
+      AssertThrowMPI(ierr);
+      ierr = MPI_Type_commit(&entry);
+      AssertThrowMPI(ierr);
       ierr = MPI_Gatherv(values.data(),
-                         n * sizeof(T),
-                         MPI_BYTE,
+                         n,
+                         entry,
                          all_values.data(),
-                         byte_count.data(),
-                         byte_start.data(),
-                         MPI_BYTE,
+                         n_of.data(),
+                         start.data(),
+                         entry,
                          0,
                          comm);
+      AssertThrowMPI(ierr);
+      ierr = MPI_Type_free(&entry);
       AssertThrowMPI(ierr);
       if (!root)
         return {};
