@@ -57,7 +57,9 @@ namespace fsgmpm
         thread_local std::vector<PointKinematics> kinematics;
         const unsigned int begin = particles.cell_begin(c);
         const unsigned int end   = particles.cell_end(c);
-        kinematics.assign(end - begin, cell_kin);
+        // Sized, not filled: each point's entry is written below once.
+        if (kinematics.size() < end - begin)
+          kinematics.resize(end - begin);
         // The volumetric strain rate and its exponential are those of the
         // cell and material unless every point has its own kinematics: one
         // exp per run of points of the same material, not per point.
@@ -69,13 +71,13 @@ namespace fsgmpm
             const unsigned int m   = particles.material_id[p];
             if (per_point || m != run_material)
               {
-                if (per_point)
-                  kin = kinematics_of(point_velocity_gradient(
-                    grid,
-                    smoothing,
-                    c,
-                    theta,
-                    geometry->barycentric(particles.position[p])));
+                kin = per_point ? kinematics_of(point_velocity_gradient(
+                        grid,
+                        smoothing,
+                        c,
+                        theta,
+                        geometry->barycentric(particles.position[p])))
+                                : cell_kin;
                 if (options[m].nmd)
                   {
                     // Eq. (25): the smoothed rate at the cell centre
@@ -94,7 +96,9 @@ namespace fsgmpm
                 run_material  = m;
               }
             else
-              kin.strain_rate = kinematics[p - begin - 1].strain_rate;
+              // The run's kinematics (with its NMD rate), as the point
+              // before; its volume ratio is this point's below.
+              kin = kinematics[p - begin - 1];
             // Volume (and so density) with the same volumetric rate as the
             // pressure.
             const double J = materials[m]->admissible_volume_ratio(
