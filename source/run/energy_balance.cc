@@ -33,9 +33,9 @@ namespace fsgmpm
             for (unsigned int p = particles.cell_begin(c); p < end;)
               {
                 // A run of points of one material: its lookup once.
-                const auto      m   = particles.material_id[p];
-                const Material &mat = *materials[m];
-                for (; p < end && particles.material_id[p] == m; ++p)
+                const unsigned int last = particles.material_run_end(p, end);
+                const Material    &mat  = *materials[particles.material_id[p]];
+                for (; p < last; ++p)
                   {
                     k += 0.5 * particles.mass[p]
                          * particles.velocity[p].norm_square();

@@ -112,14 +112,12 @@ namespace fsgmpm
         unsigned int run = begin;
         while (run < end)
           {
-            const std::uint16_t mat  = particles.material_id[run];
-            unsigned int        last = run + 1;
-            while (last < end && particles.material_id[last] == mat)
-              ++last;
-            materials[mat]->update_stresses(kinematics.data() + (run - begin),
-                                            particles.stress.data() + run,
-                                            last - run,
-                                            dt);
+            const unsigned int last = particles.material_run_end(run, end);
+            materials[particles.material_id[run]]->update_stresses(
+              kinematics.data() + (run - begin),
+              particles.stress.data() + run,
+              last - run,
+              dt);
             run = last;
           }
       });

@@ -33,10 +33,10 @@ namespace fsgmpm
                 {
                   // A run of points of one material: its viscous term's
                   // numerator once, not a second virtual call per point.
-                  const auto      m       = particles.material_id[p];
-                  const Material &mat     = *materials[m];
-                  const double    viscous = 2. * dim * mat.viscosity();
-                  for (; p < end && particles.material_id[p] == m; ++p)
+                  const unsigned int last = particles.material_run_end(p, end);
+                  const Material    &mat = *materials[particles.material_id[p]];
+                  const double       viscous = 2. * dim * mat.viscosity();
+                  for (; p < last; ++p)
                     {
                       const double rho
                         = particles.mass[p] / particles.volume[p];

@@ -683,3 +683,23 @@ TEST(ParticleStore, CachedGeometryIsTheCellsOwn)
   ps_2d.cache_cell_geometry(grid_2d);
   EXPECT_EQ(ps_2d.cached_geometry(0), nullptr);
 }
+
+
+
+// The runs of points of one material that the time step, the stress update
+// and the energies look their material up for: each run ends at the first
+// point of another material or at the bound given.
+TEST(ParticleStore, MaterialRunsEndAtTheNextMaterial)
+{
+  ParticleStore<2>                 ps;
+  const std::vector<std::uint16_t> materials = {0, 0, 1, 1, 1, 0, 2};
+  for (const std::uint16_t m : materials)
+    ps.add(Point<2>(), 0, 1., 1., {}, {}, m, 0);
+  std::vector<unsigned int> ends;
+  for (unsigned int p = 0; p < ps.size(); p = ps.material_run_end(p, ps.size()))
+    ends.push_back(ps.material_run_end(p, ps.size()));
+  EXPECT_EQ(ends, (std::vector<unsigned int>{2, 5, 6, 7}));
+  // A bound inside a run ends it there.
+  EXPECT_EQ(ps.material_run_end(2, 4), 4u);
+  EXPECT_EQ(ps.material_run_end(6, 7), 7u);
+}

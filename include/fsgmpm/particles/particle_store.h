@@ -123,6 +123,19 @@ namespace fsgmpm
       return j == invalid_slot ? 0 : slot_end[j];
     }
 
+    /// The end of the run of points of one material that starts at @p p,
+    /// before @p end: the first point after p of another material, or end.
+    /// A loop over a cell's points by runs looks its material up (a
+    /// virtual material's function, a per-material array) once per run.
+    unsigned int
+    material_run_end(unsigned int p, const unsigned int end) const
+    {
+      const auto m = material_id[p];
+      while (++p < end && material_id[p] == m)
+        ;
+      return p;
+    }
+
     /// The cells with at least one point, ascending.
     std::vector<unsigned int> occupied_cells;
 
