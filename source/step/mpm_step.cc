@@ -116,8 +116,8 @@ namespace fsgmpm
   {
     {
       TimerOutput::Scope scope(timer, "p2g");
-      // 3D: every stage of the step reads the occupied cells' geometry
-      // from here (nothing to do if stable_time_step() computed it).
+      // 3D: the occupied cells' geometry once for the whole step, which
+      // starts here (then the time step, the step's stages); in p2g's time.
       particles.cache_cell_geometry(grid);
       Stages::p2g(grid, particles, nodes, settings.stress_integration, [&]() {
         if (partition != nullptr)
@@ -156,9 +156,6 @@ namespace fsgmpm
     double dt;
     {
       TimerOutput::Scope scope(timer, "time_step");
-      // The first stage of a step on the points of the last sort: the
-      // occupied cells' geometry once for the whole step (3D).
-      particles.cache_cell_geometry(grid);
       dt = Stages::stable_time_step(grid,
                                     particles,
                                     materials,
