@@ -22,31 +22,46 @@ namespace fsgmpm
       const bool per_point
         = (integration == StressIntegration::nodal_projection);
       // Uses smoothing.velocity_gradient (velocity_gradients stage) and,
-      // for NMD materials, the nodal rates of the nmd stage.
+      // for NMD materials, the nodal rates of the nmd stage. The rotation
+      // of the step (Eq. 6) only for the materials that rotate their stress
+      // (Material::rotates_stress()); the others get the identity.
+      static const Tensor<2, 3> identity(unit_symmetric_tensor<3>());
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        const auto kinematics_of = [dt](const Tensor<2, dim> &L) {
-          // d = sym(L), W = skew(L) in 3x3 (plane strain: zero third row and
-          // column), written entry by entry: the tensor expressions compile
-          // to partial stores reloaded as pairs, which stall.
-          PointKinematics kin;
+        // d = sym(L) in 3x3 (plane strain: zero third row and column),
+        // written entry by entry: the tensor expressions compile to partial
+        // stores reloaded as pairs, which stall.
+        const auto strain_rate_of = [](const Tensor<2, dim> &L) {
+          SymmetricTensor<2, 3> d;
           for (unsigned int i = 0; i < dim; ++i)
             {
-              kin.strain_rate[i][i] = L[i][i];
+              d[i][i] = L[i][i];
               for (unsigned int j = i + 1; j < dim; ++j)
-                {
-                  kin.strain_rate[i][j] = (L[i][j] + L[j][i]) * 0.5;
-                  kin.spin[i][j]        = 0.5 * (L[i][j] - L[j][i]);
-                  kin.spin[j][i]        = -kin.spin[i][j];
-                }
+                d[i][j] = (L[i][j] + L[j][i]) * 0.5;
             }
-          kin.rotation = incremental_rotation(kin.spin, dt);
-          return kin;
+          return d;
         };
-        // With the projection every point gets its own kinematics below;
-        // the cell's (and its rotation) are not needed then.
-        const PointKinematics cell_kin
-          = per_point ? PointKinematics()
-                      : kinematics_of(smoothing.cell_velocity_gradient(c));
+        // R of W = skew(L), exactly orthogonal (hill_rotation.h).
+        const auto rotation_of = [dt](const Tensor<2, dim> &L) {
+          Tensor<2, 3> spin;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i + 1; j < dim; ++j)
+              {
+                spin[i][j] = 0.5 * (L[i][j] - L[j][i]);
+                spin[j][i] = -spin[i][j];
+              }
+          return incremental_rotation(spin, dt);
+        };
+        // Without the projection every point of the cell has the cell's
+        // strain rate, and its rotation where a material needs it (computed
+        // at the first such run). With it every point gets its own below.
+        Tensor<2, dim>        cell_L;
+        SymmetricTensor<2, 3> cell_strain_rate;
+        if (!per_point)
+          {
+            cell_L           = smoothing.cell_velocity_gradient(c);
+            cell_strain_rate = strain_rate_of(cell_L);
+          }
+        std::optional<Tensor<2, 3>> cell_rotation;
 
         // Before any volume changes: the share p2g used.
         const double theta
@@ -71,13 +86,26 @@ namespace fsgmpm
             const unsigned int m   = particles.material_id[p];
             if (per_point || m != run_material)
               {
-                kin = per_point ? kinematics_of(point_velocity_gradient(
-                        grid,
-                        smoothing,
-                        c,
-                        theta,
-                        geometry->barycentric(particles.position[p])))
-                                : cell_kin;
+                const bool rotates = materials[m]->rotates_stress();
+                if (per_point)
+                  {
+                    const Tensor<2, dim> L
+                      = point_velocity_gradient(grid,
+                                                smoothing,
+                                                c,
+                                                theta,
+                                                geometry->barycentric(
+                                                  particles.position[p]));
+                    kin.strain_rate = strain_rate_of(L);
+                    kin.rotation    = rotates ? rotation_of(L) : identity;
+                  }
+                else
+                  {
+                    kin.strain_rate = cell_strain_rate;
+                    if (rotates && !cell_rotation)
+                      cell_rotation = rotation_of(cell_L);
+                    kin.rotation = rotates ? *cell_rotation : identity;
+                  }
                 if (options[m].nmd)
                   {
                     // Eq. (25): the smoothed rate at the cell centre

@@ -40,7 +40,6 @@ namespace
   {
     PointKinematics k;
     k.strain_rate = d;
-    k.spin        = w;
     k.rotation    = incremental_rotation(w, dt);
     for (unsigned int i = 0; i < n; ++i)
       m.update_stresses(&k, &s, 1, dt);

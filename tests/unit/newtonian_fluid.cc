@@ -90,3 +90,22 @@ TEST(NewtonianFluid, TensionPolicy)
   EXPECT_EQ(no_tension.admissible_volume_ratio(0.99), 0.99);
   EXPECT_EQ(tension.admissible_volume_ratio(1.01), 1.01);
 }
+
+// The stress stage computes the rotation of the step only for materials
+// that read it: the fluid's Eq. (13) does not, but a class derived from
+// it (tutorial step-2's Bingham mud rotates its elastic deviator) gets it
+// unless it says otherwise.
+TEST(NewtonianFluid, OnlyItsOwnClassSkipsTheRotation)
+{
+  struct RotatingFluid : NewtonianFluid
+  {
+    using NewtonianFluid::NewtonianFluid;
+  };
+  const NewtonianFluid fluid(
+    2e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+  const RotatingFluid derived(
+    2e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+  EXPECT_FALSE(fluid.rotates_stress());
+  EXPECT_TRUE(derived.rotates_stress());
+  EXPECT_TRUE(static_cast<const Material &>(derived).rotates_stress());
+}

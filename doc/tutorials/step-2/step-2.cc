@@ -161,7 +161,10 @@ namespace Step2
 
     // The stress update of the introduction, one call for a run of points
     // of this material. kinematics[i] holds the point's strain rate, its
-    // rotation over the step and its volume ratio J after the step.
+    // rotation over the step and its volume ratio J after the step. (The
+    // base class's viscous stress needs no rotation and says so with
+    // rotates_stress(); a derived class gets the rotation unless it
+    // overrides that too.)
     void
     update_stresses(const PointKinematics *kinematics,
                     SymmetricTensor<2, 3> *stress,

@@ -94,15 +94,18 @@ namespace fsgmpm
       return g;
     }
 
-    /// Smallest altitude, min_k 1/|grad lambda_k| (time step, guards).
+    /// Smallest altitude, min_k 1/|grad lambda_k| (time step, guards),
+    /// as 1/sqrt(max_k |grad lambda_k|^2): one root and one division, the
+    /// same bits (rounded sqrt and division are monotone).
     double
     min_altitude() const
     {
-      double     hmin = std::numeric_limits<double>::max();
-      const auto g    = shape_gradients();
+      double     largest = 0;
+      const auto g       = shape_gradients();
       for (unsigned int k = 0; k < dim + 1; ++k)
-        hmin = std::min(hmin, 1. / g[k].norm());
-      return hmin;
+        largest = std::max(largest, g[k].norm_square());
+      return std::min(std::numeric_limits<double>::max(),
+                      1. / std::sqrt(largest));
     }
 
     Point<dim>     x0;

@@ -17,9 +17,10 @@ namespace fsgmpm
   struct PointKinematics
   {
     SymmetricTensor<2, 3> strain_rate; ///< symmetric part of grad v
-    Tensor<2, 3>          spin;        ///< W = (grad v - grad v^T)/2
     /// Exactly orthogonal incremental rotation of the step from the spin
-    /// (hill_rotation.h), computed once per cell by the stress stage.
+    /// W = (grad v - grad v^T)/2 (hill_rotation.h), computed once per cell
+    /// by the stress stage; the identity for a material whose
+    /// Material::rotates_stress() is false.
     Tensor<2, 3> rotation;
     /// J = V/V_ref after this step's volume update (with the same,
     /// possibly NMD-smoothed, volumetric strain rate as strain_rate).
@@ -81,6 +82,16 @@ namespace fsgmpm
     admissible_volume_ratio(const double J) const
     {
       return J;
+    }
+
+    /// Whether update_stresses() reads PointKinematics::rotation (the
+    /// stress stage then computes it; else it passes the identity). True
+    /// unless a material says otherwise: a stress that is isotropic plus
+    /// a function of the strain rate alone needs no rotation.
+    virtual bool
+    rotates_stress() const
+    {
+      return true;
     }
 
     /// Whether the material is a fluid (free-surface detection applies).

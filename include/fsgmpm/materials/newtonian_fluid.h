@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <typeinfo>
 
 namespace fsgmpm
 {
@@ -90,6 +91,15 @@ namespace fsgmpm
     is_fluid() const override
     {
       return true;
+    }
+
+    /// Eq. (13) needs no rotation: false for this class only. A class
+    /// derived from it (tutorial step-2's Bingham mud) may rotate an
+    /// elastic stress and gets the rotation unless it overrides this.
+    bool
+    rotates_stress() const override
+    {
+      return typeid(*this) != typeid(NewtonianFluid);
     }
 
     /// Pressure at volume ratio J (before the tension cut-off).
