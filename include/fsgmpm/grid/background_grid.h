@@ -212,10 +212,12 @@ namespace fsgmpm
       return n_nodes() / n_fields;
     }
 
+    // One velocity field (most scenes): no integer division in the loops
+    // that ask these per point.
     unsigned int
     field_of_cell(const unsigned int c) const
     {
-      return c / n_base_cells();
+      return n_fields == 1 ? 0 : c / n_base_cells();
     }
 
     /// The cell of field @p f over the same triangle as cell @p c.
@@ -228,7 +230,7 @@ namespace fsgmpm
     unsigned int
     base_node(const unsigned int i) const
     {
-      return i % n_base_nodes();
+      return n_fields == 1 ? i : i % n_base_nodes();
     }
 
     /// The affine data of cell @p c (inverse edge matrix, volume),
