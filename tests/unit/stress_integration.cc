@@ -18,13 +18,19 @@
 //   stress to 1e-12 at every point, at the occupied region's edge too;
 // - the stress update's strain rate (Stages::point_velocity_gradient) is
 //   work-conjugate to the projected force: stress power = force power to
-//   round-off, with cells of projection share 1, 0.4 and 0.
+//   round-off, with cells of projection share 1, 0.4 and 0;
+// - the stress update passes the Hughes-Winget rotation of the cell's spin
+//   (Eq. 6) to a material that rotates its stress (a class derived from
+//   NewtonianFluid, as tutorial step-2's) and the identity to one that
+//   says it does not, in a rigid rotation of the grid.
 
 #include <deal.II/grid/grid_tools.h>
 
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/grid/nodal_fields.h>
+#include <fsgmpm/materials/hill_rotation.h>
+#include <fsgmpm/materials/newtonian_fluid.h>
 #include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/smoothing_fields.h>
@@ -457,4 +463,100 @@ TEST(StressIntegration, StressPowerEqualsForcePower3D)
   std::cout << "[ measured ] 3D stress power - force power, relative: "
             << mismatch << std::endl;
   EXPECT_LT(mismatch, 1e-13);
+}
+
+namespace
+{
+  // A fluid that records the rotation each of its points receives.
+  struct RecordingFluid : NewtonianFluid
+  {
+    RecordingFluid(const bool rotates)
+      : NewtonianFluid(2e6, 1e-3, 1000, PressureLaw::linear, 7, true)
+      , rotates(rotates)
+    {}
+
+    bool
+    rotates_stress() const override
+    {
+      return rotates;
+    }
+
+    void
+    update_stresses(const PointKinematics *kinematics,
+                    SymmetricTensor<2, 3> *stress,
+                    const unsigned int     n,
+                    const double           dt) const override
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        seen.push_back(kinematics[i].rotation);
+      NewtonianFluid::update_stresses(kinematics, stress, n, dt);
+    }
+
+    const bool                        rotates;
+    mutable std::vector<Tensor<2, 3>> seen;
+  };
+
+  // Largest |R_p - R| over the points of a grid in rigid rotation, R the
+  // rotation the material should receive.
+  double
+  rotation_error(const bool rotates)
+  {
+    const auto       grid = test_tools::make_unit_box_grid<2>(4);
+    ParticleStore<2> points;
+    std::mt19937     rng(5);
+    std::uniform_real_distribution<double> u(0.02, 0.98);
+    for (unsigned int k = 0; k < 100; ++k)
+      {
+        const Point<2>     x(u(rng), u(rng));
+        const unsigned int c = grid->find_cell_brute_force(x, 1e-12);
+        points.add(x, c, 1e-3, 1e-6, {}, {}, 0, 0);
+      }
+    points.sort_by_cell(grid->n_cells());
+    // v = omega (-y, x): L = [[0, -omega], [omega, 0]], W = L.
+    const double   omega = 3, dt = 0.05;
+    NodalFields<2> nodes;
+    nodes.resize(grid->n_nodes());
+    for (unsigned int i = 0; i < grid->n_nodes(); ++i)
+      nodes.velocity[i] = omega
+                          * Tensor<1, 2>({-grid->node_positions[i][1],
+                                          grid->node_positions[i][0]});
+    SmoothingFields<2> smoothing;
+    smoothing.resize(1, grid->n_nodes());
+    Stages::velocity_gradients(*grid, nodes, smoothing, points);
+    std::vector<std::unique_ptr<Material>> materials;
+    materials.push_back(std::make_unique<RecordingFluid>(rotates));
+    Stages::stress_update(*grid,
+                          materials,
+                          {MaterialOptions()},
+                          dt,
+                          smoothing,
+                          points,
+                          StressIntegration::points);
+    Tensor<2, 3> W;
+    W[0][1]                     = -omega;
+    W[1][0]                     = omega;
+    const Tensor<2, 3> expected = rotates
+                                    ? incremental_rotation(W, dt)
+                                    : Tensor<2, 3>(unit_symmetric_tensor<3>());
+    const auto        &seen = static_cast<RecordingFluid &>(*materials[0]).seen;
+    EXPECT_EQ(seen.size(), points.size());
+    double error = 0;
+    for (const auto &R : seen)
+      error = std::max(error, (R - expected).norm());
+    return error;
+  }
+} // namespace
+
+TEST(StressIntegration, RotationOnlyForMaterialsThatRotate)
+{
+  EXPECT_LT(rotation_error(true), 1e-14);
+  EXPECT_LT(rotation_error(false), 1e-14);
+  // The rotation is not the identity, so the two cases differ.
+  Tensor<2, 3> W;
+  W[0][1] = -3;
+  W[1][0] = 3;
+  EXPECT_GT((incremental_rotation(W, 0.05)
+             - Tensor<2, 3>(unit_symmetric_tensor<3>()))
+              .norm(),
+            0.1);
 }
