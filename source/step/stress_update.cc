@@ -3,6 +3,7 @@
 #include <fsgmpm/step/stages.h>
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 namespace fsgmpm
@@ -26,31 +27,35 @@ namespace fsgmpm
       // of the step (Eq. 6) only for the materials that rotate their stress
       // (Material::rotates_stress()); the others get the identity.
       static const Tensor<2, 3> identity(unit_symmetric_tensor<3>());
-      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        // d = sym(L) in 3x3 (plane strain: zero third row and column),
-        // written entry by entry: the tensor expressions compile to partial
-        // stores reloaded as pairs, which stall.
-        const auto strain_rate_of = [](const Tensor<2, dim> &L) {
-          SymmetricTensor<2, 3> d;
-          for (unsigned int i = 0; i < dim; ++i)
-            {
-              d[i][i] = L[i][i];
-              for (unsigned int j = i + 1; j < dim; ++j)
-                d[i][j] = (L[i][j] + L[j][i]) * 0.5;
-            }
-          return d;
-        };
-        // R of W = skew(L), exactly orthogonal (hill_rotation.h).
-        const auto rotation_of = [dt](const Tensor<2, dim> &L) {
-          Tensor<2, 3> spin;
-          for (unsigned int i = 0; i < dim; ++i)
+      // Asked once per call, not once per cell and run.
+      std::vector<std::uint8_t> rotates(materials.size());
+      for (unsigned int m = 0; m < materials.size(); ++m)
+        rotates[m] = materials[m]->rotates_stress();
+      // d = sym(L) in 3x3 (plane strain: zero third row and column),
+      // written entry by entry: the tensor expressions compile to partial
+      // stores reloaded as pairs, which stall.
+      const auto strain_rate_of = [](const Tensor<2, dim> &L) {
+        SymmetricTensor<2, 3> d;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            d[i][i] = L[i][i];
             for (unsigned int j = i + 1; j < dim; ++j)
-              {
-                spin[i][j] = 0.5 * (L[i][j] - L[j][i]);
-                spin[j][i] = -spin[i][j];
-              }
-          return incremental_rotation(spin, dt);
-        };
+              d[i][j] = (L[i][j] + L[j][i]) * 0.5;
+          }
+        return d;
+      };
+      // R of W = skew(L), exactly orthogonal (hill_rotation.h).
+      const auto rotation_of = [dt](const Tensor<2, dim> &L) {
+        Tensor<2, 3> spin;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i + 1; j < dim; ++j)
+            {
+              spin[i][j] = 0.5 * (L[i][j] - L[j][i]);
+              spin[j][i] = -spin[i][j];
+            }
+        return incremental_rotation(spin, dt);
+      };
+      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         // Without the projection every point of the cell has the cell's
         // strain rate, and its rotation where a material needs it (computed
         // at the first such run). With it every point gets its own below.
@@ -86,7 +91,6 @@ namespace fsgmpm
             const unsigned int m   = particles.material_id[p];
             if (per_point || m != run_material)
               {
-                const bool rotates = materials[m]->rotates_stress();
                 if (per_point)
                   {
                     const Tensor<2, dim> L
@@ -97,14 +101,14 @@ namespace fsgmpm
                                                 geometry->barycentric(
                                                   particles.position[p]));
                     kin.strain_rate = strain_rate_of(L);
-                    kin.rotation    = rotates ? rotation_of(L) : identity;
+                    kin.rotation    = rotates[m] ? rotation_of(L) : identity;
                   }
                 else
                   {
                     kin.strain_rate = cell_strain_rate;
-                    if (rotates && !cell_rotation)
+                    if (rotates[m] && !cell_rotation)
                       cell_rotation = rotation_of(cell_L);
-                    kin.rotation = rotates ? *cell_rotation : identity;
+                    kin.rotation = rotates[m] ? *cell_rotation : identity;
                   }
                 if (options[m].nmd)
                   {

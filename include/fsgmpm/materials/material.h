@@ -18,8 +18,9 @@ namespace fsgmpm
   {
     SymmetricTensor<2, 3> strain_rate; ///< symmetric part of grad v
     /// Exactly orthogonal incremental rotation of the step from the spin
-    /// W = (grad v - grad v^T)/2 (hill_rotation.h), computed once per cell
-    /// by the stress stage; the identity for a material whose
+    /// W = (grad v - grad v^T)/2 (hill_rotation.h), computed by the stress
+    /// stage once per cell (per point with the nodal stress projection);
+    /// the identity for a material whose
     /// Material::rotates_stress() is false.
     Tensor<2, 3> rotation;
     /// J = V/V_ref after this step's volume update (with the same,
