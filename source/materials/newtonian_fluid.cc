@@ -165,6 +165,25 @@ namespace fsgmpm
     return 0.5 * p * p / K;
   }
 
+  double
+  NewtonianFluid::add_strain_energy(const SymmetricTensor<2, 3> *stress,
+                                    const double                *volume,
+                                    const unsigned int           n,
+                                    double                       energy) const
+  {
+    if (!is_this_class())
+      return Material::add_strain_energy(stress, volume, n, energy);
+    // strain_energy_density()'s arithmetic, in the same order.
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double p = -trace(stress[i]) / 3.;
+        energy += volume[i] * (0.5 * p * p / K);
+      }
+    return energy;
+  }
+
+
+
   FSGMPM_REGISTER_MATERIAL(NewtonianFluid,
                            "Newtonian fluid",
                            "weakly compressible Newtonian fluid, Eq. (13) "

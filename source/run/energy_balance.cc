@@ -32,15 +32,18 @@ namespace fsgmpm
             const unsigned int end = particles.cell_end(c);
             for (unsigned int p = particles.cell_begin(c); p < end;)
               {
-                // A run of points of one material: its lookup once.
+                // A run of points of one material: one call for it.
                 const unsigned int last = particles.material_run_end(p, end);
-                const Material    &mat  = *materials[particles.material_id[p]];
+                // The run's strain energy in one call, in point order.
+                s = materials[particles.material_id[p]]->add_strain_energy(
+                  particles.stress.data() + p,
+                  particles.volume.data() + p,
+                  last - p,
+                  s);
                 for (; p < last; ++p)
                   {
                     k += 0.5 * particles.mass[p]
                          * particles.velocity[p].norm_square();
-                    s += particles.volume[p]
-                         * mat.strain_energy_density(particles.stress[p]);
                     g -= particles.mass[p] * (gravity * particles.position[p]);
                   }
               }

@@ -73,6 +73,10 @@ namespace fsgmpm
       // owners, before the points read them back.
       if (synchronise)
         synchronise();
+      // Each node's average once, not at each of its cells' reads.
+      for (unsigned int m = 0; m < options.size(); ++m)
+        if (options[m].anp)
+          smoothing.divide(m, nodes.active_nodes);
       CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         // Without interpolation p_bar is the cell's, per material: computed
         // once per run of points of the same material.

@@ -279,6 +279,10 @@ namespace fsgmpm
         }
       Stages::nmd(grid, nodes, material_options, smoothing, particles);
       synchronise_smoothing([](const MaterialOptions &o) { return o.nmd; });
+      // The stress update reads the averages: each node's divided once.
+      for (unsigned int m = 0; m < material_options.size(); ++m)
+        if (material_options[m].nmd)
+          smoothing.divide(m, nodes.active_nodes);
     }
     if (particles.has_affine_velocity())
       {

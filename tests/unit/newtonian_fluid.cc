@@ -7,6 +7,8 @@
 #include <fsgmpm/materials/newtonian_fluid.h>
 #include <gtest/gtest.h>
 
+#include <vector>
+
 using namespace fsgmpm;
 
 namespace
@@ -108,4 +110,50 @@ TEST(NewtonianFluid, OnlyItsOwnClassSkipsTheRotation)
   EXPECT_FALSE(fluid.rotates_stress());
   EXPECT_TRUE(derived.rotates_stress());
   EXPECT_TRUE(static_cast<const Material &>(derived).rotates_stress());
+}
+
+// The energies call add_strain_energy() once per run of points: the fluid's
+// own loop must give the bits of strain_energy_density() summed point by
+// point after the caller's sum, and a derived class that changes the
+// density (step-2's Bingham mud adds its elastic deviator's) must get its
+// own density through it.
+TEST(NewtonianFluid, StrainEnergyOfARunIsItsPointsSummedInOrder)
+{
+  const NewtonianFluid fluid(
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+  std::vector<SymmetricTensor<2, 3>> stress(5);
+  std::vector<double>                volume(5);
+  for (unsigned int i = 0; i < 5; ++i)
+    {
+      for (unsigned int d = 0; d < 3; ++d)
+        stress[i][d][d] = -1234.567 * (i + 1) - 0.1 * d;
+      stress[i][0][1] = 17.3 * i;
+      volume[i]       = 1e-4 * (1. + 0.37 * i);
+    }
+  const double before   = 0.123456789;
+  double       expected = before;
+  for (unsigned int i = 0; i < 5; ++i)
+    expected += volume[i] * fluid.strain_energy_density(stress[i]);
+  EXPECT_EQ(fluid.add_strain_energy(stress.data(), volume.data(), 5, before),
+            expected);
+
+  struct ShearEnergyFluid : NewtonianFluid
+  {
+    using NewtonianFluid::NewtonianFluid;
+    double
+    strain_energy_density(const SymmetricTensor<2, 3> &s) const override
+    {
+      return NewtonianFluid::strain_energy_density(s) + s[0][1] * s[0][1];
+    }
+  };
+  const ShearEnergyFluid derived(
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+  double derived_expected = 0;
+  for (unsigned int i = 0; i < 5; ++i)
+    derived_expected += volume[i] * derived.strain_energy_density(stress[i]);
+  EXPECT_EQ(static_cast<const Material &>(derived).add_strain_energy(
+              stress.data(), volume.data(), 5, 0.),
+            derived_expected);
+  EXPECT_GT(derived_expected,
+            fluid.add_strain_energy(stress.data(), volume.data(), 5, 0.));
 }

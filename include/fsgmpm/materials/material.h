@@ -31,8 +31,9 @@ namespace fsgmpm
   /**
    * Interface of a constitutive model. A material updates the Cauchy stress
    * (tension positive, 3x3 also in 2D) of a contiguous run of points that
-   * all belong to it; one virtual call per run, never per point. A material
-   * knows nothing about the grid.
+   * all belong to it; one virtual call per run, never per point (the energies'
+   * strain energy too: add_strain_energy(); the time step still calls
+   * wave_speed() per point). A material knows nothing about the grid.
    */
   class Material
   {
@@ -56,6 +57,23 @@ namespace fsgmpm
     /// Stored (recoverable) energy per unit volume at the given stress.
     virtual double
     strain_energy_density(const SymmetricTensor<2, 3> &stress) const = 0;
+
+    /// @p energy plus sum_i volume[i] strain_energy_density(stress[i]),
+    /// added in the order i = 0, ..., n - 1 (so a run's sum continues the
+    /// caller's with the same bits as a loop over its points): the energies
+    /// call this once per run of points of the material. The default calls
+    /// strain_energy_density() per point; a material whose density is a
+    /// few operations overrides it with a loop of its own.
+    virtual double
+    add_strain_energy(const SymmetricTensor<2, 3> *stress,
+                      const double                *volume,
+                      const unsigned int           n,
+                      double                       energy) const
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        energy += volume[i] * strain_energy_density(stress[i]);
+      return energy;
+    }
 
     /// Mass density at which the material is created.
     virtual double

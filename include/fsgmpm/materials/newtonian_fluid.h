@@ -64,6 +64,15 @@ namespace fsgmpm
     double
     strain_energy_density(const SymmetricTensor<2, 3> &stress) const override;
 
+    /// strain_energy_density()'s arithmetic in a loop, without a call per
+    /// point. A derived class that overrides strain_energy_density() (step-2's
+    /// Bingham mud) gets the base class's call per point instead.
+    double
+    add_strain_energy(const SymmetricTensor<2, 3> *stress,
+                      const double                *volume,
+                      const unsigned int           n,
+                      double                       energy) const override;
+
     double
     reference_density() const override
     {
@@ -99,7 +108,7 @@ namespace fsgmpm
     bool
     rotates_stress() const override
     {
-      return typeid(*this) != typeid(NewtonianFluid);
+      return !is_this_class();
     }
 
     /// Pressure at volume ratio J (before the tension cut-off).
@@ -112,6 +121,16 @@ namespace fsgmpm
     const bool        allow_tension;
     /// The body's parameter path ("Bodies/Body 0"), for messages.
     std::string path;
+
+  private:
+    /// Whether this object is a NewtonianFluid itself, not of a class
+    /// derived from it: only then do the overrides above that skip
+    /// strain_energy_density() or the rotation apply.
+    bool
+    is_this_class() const
+    {
+      return typeid(*this) == typeid(NewtonianFluid);
+    }
   };
 } // namespace fsgmpm
 

@@ -9,6 +9,7 @@
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/particles/particle_store.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace fsgmpm
@@ -30,6 +31,7 @@ namespace fsgmpm
     {
       numerator.assign(n_materials, {});
       denominator.assign(n_materials, {});
+      divided.assign(n_materials, 0);
       this->n_nodes = n_nodes;
       velocity_gradient.clear();
     }
@@ -77,12 +79,31 @@ namespace fsgmpm
       for_each_node(nodes, [&](const unsigned int i) {
         numerator[m][i] = denominator[m][i] = 0.;
       });
+      divided[m] = 0;
+    }
+
+    /// Once material m's sums on @p nodes are complete (and, MPI, their
+    /// rim refreshed): replace each numerator by its average, so that
+    /// average() reads it instead of dividing at every read (a cell's
+    /// dim + 1 nodes per run of points, in the stress update and ANP). The
+    /// same quotient, so the same bits. Until reset(m).
+    void
+    divide(const unsigned int m, const std::vector<unsigned int> &nodes)
+    {
+      Assert(!divided[m], ExcInternalError());
+      for_each_node(nodes, [&](const unsigned int i) {
+        numerator[m][i]
+          = denominator[m][i] > 0 ? numerator[m][i] / denominator[m][i] : 0.;
+      });
+      divided[m] = 1;
     }
 
     /// Nodal average of material m at node i (0 if nothing contributed).
     double
     average(const unsigned int m, const unsigned int i) const
     {
+      if (divided[m])
+        return numerator[m][i];
       return denominator[m][i] > 0 ? numerator[m][i] / denominator[m][i] : 0.;
     }
 
@@ -99,7 +120,9 @@ namespace fsgmpm
     }
 
     std::vector<std::vector<double>> numerator, denominator;
-    std::vector<double>              volume_fraction, lumped_volume;
+    /// Per material, whether divide() has turned numerator into averages.
+    std::vector<std::uint8_t> divided;
+    std::vector<double>       volume_fraction, lumped_volume;
     /// Velocity gradient of the occupied cells, in the order of the
     /// points' occupied_cells (cell_velocity_gradient()).
     std::vector<Tensor<2, dim>> velocity_gradient;
