@@ -18,6 +18,8 @@
 // And a run (Simulator) holds its window from the first partition on, through
 // repartitions, a scene with a membrane too (its nodes' cells agree on every
 // process). DomainPartition::all_window_cells gives every window in one pass.
+// And Parallel::gather_to_root combines the processes' entries in their
+// order, and refuses a gather past 2^31 - 1 entries.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -29,6 +31,7 @@
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/parallel/domain_partition.h>
+#include <fsgmpm/parallel/gather_to_root.h>
 #include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/simulator.h>
 #include <fsgmpm/step/cell_loops.h>
@@ -38,8 +41,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <set>
+#include <vector>
 
 #include "grid_comparison.h"
 #include "test_utilities.h"
@@ -978,4 +983,49 @@ TEST(GridWindow, APointBeyondTheWindowIsAnErrorNotALoss)
             BackgroundGrid<2>::invalid);
   EXPECT_EQ(locator.locate(Point<2>(x, -0.2), own), BackgroundGrid<2>::invalid);
   EXPECT_EQ(locator.locate(centre(window, own), own), own);
+}
+
+
+
+// Parallel::gather_to_root: process 0 gets every process's entries of a
+// whole-grid array combined in the order of the processes; the others get
+// nothing. Its MPI displacements are ints, and a total past 2^31 - 1
+// entries is an error with a message (the counts of a gather that large
+// cannot be sent here, so the check is tested on the counts alone).
+TEST(GatherToRoot, CombinesEveryProcesssEntriesInProcessOrder)
+{
+  const MPI_Comm     comm = MPI_COMM_WORLD;
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int n    = Utilities::MPI::n_mpi_processes(comm);
+  // Entry `rank` alone, and entry n shared by all: appended in order.
+  const std::vector<unsigned int> index  = {rank, n};
+  const std::vector<double>       values = {rank + 0.5, double(rank + 1)};
+  const auto                      result = Parallel::gather_to_root(
+    index, values, n + 1, comm, [](double &sum, const double v) {
+      sum = 10 * sum + v;
+    });
+  if (rank != 0)
+    {
+      EXPECT_TRUE(result.empty());
+      return;
+    }
+  ASSERT_EQ(result.size(), n + 1);
+  double in_order = 0;
+  for (unsigned int q = 0; q < n; ++q)
+    {
+      EXPECT_EQ(result[q], q + 0.5);
+      in_order = 10 * in_order + (q + 1);
+    }
+  EXPECT_EQ(result[n], in_order); // 123 on 3 processes: in process order
+}
+
+TEST(GatherToRoot, DisplacementsPastTwoToTheThirtyOneAreAnError)
+{
+  const int big = std::numeric_limits<int>::max() / 2 + 1; // 2^30
+  EXPECT_EQ(Parallel::gather_displacements({3, 0, 4}),
+            (std::vector<int>{0, 3, 3, 7}));
+  EXPECT_EQ(Parallel::gather_displacements({big - 1, big}).back(),
+            std::numeric_limits<int>::max());
+  EXPECT_THROW(Parallel::gather_displacements({big, big}), ExceptionBase);
+  EXPECT_THROW(Parallel::gather_displacements({big, 1, big}), ExceptionBase);
 }

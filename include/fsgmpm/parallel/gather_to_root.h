@@ -15,6 +15,31 @@ namespace fsgmpm
   namespace Parallel
   {
     /**
+     * The displacements of an MPI_Gatherv of @p counts entries from each
+     * process (start[q] of process q, start[n] the total): MPI counts and
+     * displacements are ints, so the running total is summed in 64 bits and
+     * a total above 2^31 - 1 entries is an error (what to do: run on more
+     * processes or gather less), not a wrap-around.
+     */
+    inline std::vector<int>
+    gather_displacements(const std::vector<int> &counts)
+    {
+      std::vector<int> start(counts.size() + 1, 0);
+      std::int64_t     total = 0;
+      for (unsigned int q = 0; q < counts.size(); ++q)
+        {
+          AssertThrow(counts[q] >= 0, ExcInternalError());
+          total += counts[q];
+          AssertThrow(total <= std::numeric_limits<int>::max(),
+                      ExcMessage("gather_to_root: the processes send more "
+                                 "than 2^31 - 1 entries to process 0 in "
+                                 "total."));
+          start[q + 1] = total;
+        }
+      return start;
+    }
+
+    /**
      * Values of a whole-grid array that each process holds a few of (its
      * window's), brought to process 0 only: each process sends the
      * whole-grid numbers @p index and the values @p values (plain data) of
@@ -43,17 +68,7 @@ namespace fsgmpm
       int ierr = MPI_Gather(&n, 1, MPI_INT, n_of.data(), 1, MPI_INT, 0, comm);
       AssertThrowMPI(ierr);
       // The offsets are ints too: their total is checked in 64 bits.
-      std::vector<int> start(n_of.size() + 1, 0);
-      std::int64_t     total = 0;
-      for (unsigned int q = 0; q < n_of.size(); ++q)
-        {
-          total += n_of[q];
-          AssertThrow(total <= std::numeric_limits<int>::max(),
-                      ExcMessage("gather_to_root: the processes send more "
-                                 "than 2^31 - 1 entries to process 0 in "
-                                 "total."));
-          start[q + 1] = total;
-        }
+      const std::vector<int>    start = gather_displacements(n_of);
       std::vector<unsigned int> all_index(start.back());
       std::vector<T>            all_values(start.back());
       ierr = MPI_Gatherv(index.data(),
