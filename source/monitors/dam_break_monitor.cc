@@ -1,6 +1,7 @@
 #include <fsgmpm/monitors/dam_break_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
 #include <fsgmpm/scene/parameter_parsing.h>
+#include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,22 +46,27 @@ namespace fsgmpm
   DamBreakMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
   {
     const ParticleStore<dim> &particles = context.particles;
-    double                    front = 0, height = 0;
-    for (unsigned int p = 0; p < particles.size(); ++p)
-      {
+    // In parallel (a maximum is exact: the same for any number of threads),
+    // and a point's spacing (a root per point, a cube root in 3D) only for
+    // the points in the bottom row or the wall's column.
+    const auto maxima = CellLoops::parallel_maxima<2>(
+      particles.size(), {{0., 0.}}, [&](const unsigned int p, auto &m) {
         if (particles.free_surface[p])
-          continue;
+          return;
+        const double x = particles.position[p][0] - wall_x;
+        const double y = particles.position[p][1] - base_y;
+        if (y >= row_height && x >= column_width)
+          return;
         const double half_spacing
           = 0.5
             * (dim == 2 ? std::sqrt(particles.volume[p])
                         : std::cbrt(particles.volume[p]));
-        const double x = particles.position[p][0] - wall_x;
-        const double y = particles.position[p][1] - base_y;
         if (y < row_height)
-          front = std::max(front, x + half_spacing);
+          m[0] = std::max(m[0], x + half_spacing);
         if (x < column_width)
-          height = std::max(height, y + half_spacing);
-      }
+          m[1] = std::max(m[1], y + half_spacing);
+      });
+    const double front = maxima[0], height = maxima[1];
     return {front, height};
   }
 

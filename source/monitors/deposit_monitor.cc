@@ -1,5 +1,6 @@
 #include <fsgmpm/monitors/deposit_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
+#include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,9 +21,9 @@ namespace fsgmpm
   DepositMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
   {
     const ParticleStore<dim> &particles = context.particles;
-    double                    runout = 0, top = 0;
-    for (unsigned int p = 0; p < particles.size(); ++p)
-      {
+    // In parallel: a maximum is exact, the same for any number of threads.
+    const auto maxima = CellLoops::parallel_maxima<2>(
+      particles.size(), {{0., 0.}}, [&](const unsigned int p, auto &m) {
         const double half_spacing
           = 0.5
             * (dim == 2 ? std::sqrt(particles.volume[p])
@@ -31,9 +32,10 @@ namespace fsgmpm
         const double y = particles.position[p][1] - base_y;
         // A point resting on the base makes the deposit one spacing thick.
         if (y + half_spacing >= 2 * half_spacing * (1 - 1e-3))
-          runout = std::max(runout, x + half_spacing);
-        top = std::max(top, y + half_spacing);
-      }
+          m[0] = std::max(m[0], x + half_spacing);
+        m[1] = std::max(m[1], y + half_spacing);
+      });
+    const double runout = maxima[0], top = maxima[1];
     return {runout, top};
   }
 

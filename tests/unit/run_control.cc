@@ -380,3 +380,40 @@ TEST(CompensatedSum, ChunkedInParallelIndependentOfThreads)
   EXPECT_EQ(chunked(512)[0].sum(), first.sum());
   EXPECT_EQ(chunked(512)[0].correction(), first.correction());
 }
+
+
+
+// The scene monitors' maxima over the points (CellLoops::parallel_maxima):
+// chunks of 4096 in parallel, merged with std::max. A maximum is exact, so
+// 1 and 2 threads give the serial loop's values; an item may raise one
+// maximum and not the other, and no item leaves the initial values.
+TEST(CellLoops, ParallelMaximaAreTheSerialOnes)
+{
+  const std::vector<double> terms  = alternating_terms(54321);
+  const auto                maxima = [&](const unsigned int n) {
+    return CellLoops::parallel_maxima<2>(
+      n, {{-1., 0.}}, [&](const unsigned int a, std::array<double, 2> &m) {
+        m[0] = std::max(m[0], terms[a]);
+        if (a % 3 == 0)
+          m[1] = std::max(m[1], terms[a] * terms[a]);
+      });
+  };
+  std::array<double, 2> serial = {{-1., 0.}};
+  for (unsigned int a = 0; a < terms.size(); ++a)
+    {
+      serial[0] = std::max(serial[0], terms[a]);
+      if (a % 3 == 0)
+        serial[1] = std::max(serial[1], terms[a] * terms[a]);
+    }
+  const unsigned int threads = MultithreadInfo::n_threads();
+  MultithreadInfo::set_thread_limit(1);
+  const auto one_thread = maxima(terms.size());
+  MultithreadInfo::set_thread_limit(2);
+  ASSERT_EQ(MultithreadInfo::n_threads(), 2u);
+  const auto two_threads = maxima(terms.size());
+  MultithreadInfo::set_thread_limit(threads);
+  EXPECT_EQ(one_thread, serial);
+  EXPECT_EQ(two_threads, serial);
+  EXPECT_GT(serial[0], -1.);
+  EXPECT_EQ(maxima(0), (std::array<double, 2>{{-1., 0.}}));
+}

@@ -91,6 +91,42 @@ namespace fsgmpm
     }
 
     /**
+     * N maxima over the items [0, n), in parallel: f(a, maxima) raises
+     * maxima[0..N-1] by item a's values (std::max). Each chunk of 4096 items
+     * starts from @p initial and the chunks' maxima are merged with
+     * std::max: a maximum is exact, so the result does not depend on the
+     * number of threads.
+     */
+    template <unsigned int N, typename Function>
+    std::array<double, N>
+    parallel_maxima(const unsigned int           n,
+                    const std::array<double, N> &initial,
+                    const Function              &f)
+    {
+      constexpr unsigned int             chunk    = 4096;
+      const unsigned int                 n_chunks = (n + chunk - 1) / chunk;
+      std::vector<std::array<double, N>> partial(n_chunks, initial);
+      parallel_range(
+        n_chunks,
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int k = b; k < e; ++k)
+            {
+              std::array<double, N> maxima = initial;
+              for (unsigned int a = k * chunk; a < std::min(n, (k + 1) * chunk);
+                   ++a)
+                f(a, maxima);
+              partial[k] = maxima;
+            }
+        },
+        1);
+      std::array<double, N> maxima = initial;
+      for (const auto &p : partial)
+        for (unsigned int q = 0; q < N; ++q)
+          maxima[q] = std::max(maxima[q], p[q]);
+      return maxima;
+    }
+
+    /**
      * Call f(cell) for every occupied cell, colour by colour, the blocks of
      * a colour in parallel, the cells of a block in order
      * (BackgroundGrid::cell_block). No two blocks of a colour share a node,
