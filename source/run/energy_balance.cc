@@ -32,9 +32,9 @@ namespace fsgmpm
             const unsigned int end = particles.cell_end(c);
             for (unsigned int p = particles.cell_begin(c); p < end;)
               {
-                // A run of points of one material: one call for it.
+                // A run of points of one material: its strain energy in
+                // one call (Material::add_strain_energy(), in point order).
                 const unsigned int last = particles.material_run_end(p, end);
-                // The run's strain energy in one call, in point order.
                 s = materials[particles.material_id[p]]->add_strain_energy(
                   particles.stress.data() + p,
                   particles.volume.data() + p,

@@ -22,7 +22,9 @@
 // - the stress update passes the Hughes-Winget rotation of the cell's spin
 //   (Eq. 6) to a material that rotates its stress (a class derived from
 //   NewtonianFluid, as tutorial step-2's) and the identity to one that
-//   says it does not, in a rigid rotation of the grid.
+//   says it does not, in a rigid rotation of the grid;
+// - the nodal averages the stress update (NMD) and ANP read are the same
+//   bits when each node's is divided once (SmoothingFields::divide()).
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -559,4 +561,37 @@ TEST(StressIntegration, RotationOnlyForMaterialsThatRotate)
              - Tensor<2, 3>(unit_symmetric_tensor<3>()))
               .norm(),
             0.1);
+}
+
+
+
+// NMD and ANP read nodal averages num/den: SmoothingFields::divide() turns
+// each node's numerator into its average once, after the sums, and
+// average() then reads it. The same quotient (equal bits), 0 where nothing
+// contributed; reset() starts the sums again.
+TEST(SmoothingFields, DivideOnceGivesTheAveragesOfEveryRead)
+{
+  SmoothingFields<2> smoothing;
+  smoothing.resize(2, 6);
+  const std::vector<unsigned int> active = {0, 2, 3, 5};
+  smoothing.reset(1, active);
+  const double num[] = {1.0, 0, -7.3, 2.0 / 3, 0, 1e-300};
+  const double den[] = {3.0, 0, 0.7, 0.1, 0, 3e-301};
+  for (const unsigned int i : active)
+    {
+      smoothing.numerator[1][i]   = num[i];
+      smoothing.denominator[1][i] = i == 3 ? 0 : den[i];
+    }
+  std::vector<double> before;
+  for (const unsigned int i : active)
+    before.push_back(smoothing.average(1, i));
+  smoothing.divide(1, active);
+  for (unsigned int k = 0; k < active.size(); ++k)
+    EXPECT_EQ(smoothing.average(1, active[k]), before[k]);
+  EXPECT_EQ(smoothing.average(1, 3), 0.); // nothing contributed
+  EXPECT_EQ(smoothing.average(1, 0), 1.0 / 3.0);
+  smoothing.reset(1, active);
+  smoothing.numerator[1][0]   = 4;
+  smoothing.denominator[1][0] = 2;
+  EXPECT_EQ(smoothing.average(1, 0), 2.);
 }

@@ -31,9 +31,10 @@ namespace fsgmpm
   /**
    * Interface of a constitutive model. A material updates the Cauchy stress
    * (tension positive, 3x3 also in 2D) of a contiguous run of points that
-   * all belong to it; one virtual call per run, never per point (the energies'
-   * strain energy too: add_strain_energy(); the time step still calls
-   * wave_speed() per point). A material knows nothing about the grid.
+   * all belong to it; one virtual call per run, not per point (so too the
+   * energies' add_strain_energy(); the time step's wave_speed() and the
+   * stress stage's admissible_volume_ratio() are still called per point).
+   * A material knows nothing about the grid.
    */
   class Material
   {
