@@ -33,6 +33,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 using namespace fsgmpm;
 
@@ -282,6 +283,21 @@ namespace
       }
     return terms;
   }
+
+  // f() on 1 thread, then on 2 (the thread limit restored after).
+  template <typename Function>
+  auto
+  on_one_and_two_threads(const Function &f)
+  {
+    const unsigned int threads = MultithreadInfo::n_threads();
+    MultithreadInfo::set_thread_limit(1);
+    const auto one_thread = f();
+    MultithreadInfo::set_thread_limit(2);
+    EXPECT_EQ(MultithreadInfo::n_threads(), 2u);
+    const auto two_threads = f();
+    MultithreadInfo::set_thread_limit(threads);
+    return std::make_pair(one_thread, two_threads);
+  }
 } // namespace
 
 
@@ -350,13 +366,8 @@ TEST(CompensatedSum, ChunkedInParallelIndependentOfThreads)
         sums[1].add(terms[a] * terms[a]);
       });
   };
-  const unsigned int threads = MultithreadInfo::n_threads();
-  MultithreadInfo::set_thread_limit(1);
-  const auto one_thread = chunked(terms.size());
-  MultithreadInfo::set_thread_limit(2);
-  ASSERT_EQ(MultithreadInfo::n_threads(), 2u);
-  const auto two_threads = chunked(terms.size());
-  MultithreadInfo::set_thread_limit(threads);
+  const auto [one_thread, two_threads]
+    = on_one_and_two_threads([&]() { return chunked(terms.size()); });
   CompensatedSum serial[2];
   for (const double t : terms)
     {
@@ -405,13 +416,8 @@ TEST(CellLoops, ParallelMaximaAreTheSerialOnes)
       if (a % 3 == 0)
         serial[1] = std::max(serial[1], terms[a] * terms[a]);
     }
-  const unsigned int threads = MultithreadInfo::n_threads();
-  MultithreadInfo::set_thread_limit(1);
-  const auto one_thread = maxima(terms.size());
-  MultithreadInfo::set_thread_limit(2);
-  ASSERT_EQ(MultithreadInfo::n_threads(), 2u);
-  const auto two_threads = maxima(terms.size());
-  MultithreadInfo::set_thread_limit(threads);
+  const auto [one_thread, two_threads]
+    = on_one_and_two_threads([&]() { return maxima(terms.size()); });
   EXPECT_EQ(one_thread, serial);
   EXPECT_EQ(two_threads, serial);
   EXPECT_GT(serial[0], -1.);
