@@ -3,6 +3,7 @@
 #include <fsgmpm/materials/hill_rotation.h>
 #include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/materials/mohr_coulomb.h>
+#include <fsgmpm/materials/principal_stresses.h>
 
 #include <cmath>
 #include <limits>
@@ -138,7 +139,9 @@ namespace fsgmpm
   MohrCoulomb::return_mapping(const SymmetricTensor<2, 3> &trial,
                               Return                      &kind) const
   {
-    const auto eig = eigenvectors(trial); // descending eigenvalues
+    // Descending principal values with their directions (closed form in
+    // plane strain: principal_stresses.h).
+    const auto                  eig = principal_stresses(trial);
     const std::array<double, 3> s
       = {{eig[0].first, eig[1].first, eig[2].first}};
     const double scale = std::abs(s[0]) + std::abs(s[2]) + yield.cohesion_term;

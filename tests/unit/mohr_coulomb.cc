@@ -11,12 +11,18 @@
 // plane, every edge and the apex of the hexagonal pyramid in principal
 // space (the feasible candidate nearest the trial), and against 64
 // sampled surface points around the returned one; the kind of return
-// (plane, edge, apex) matches the brute force's active set.
+// (plane, edge, apex) matches the brute force's active set, for general
+// and for plane-strain trials (every other one); (vii) the closed-form
+// principal stresses of a plane-strain stress (principal_stresses()) are
+// deal.II's eigenvectors() to round-off.
 
 #include <fsgmpm/materials/hill_rotation.h>
 #include <fsgmpm/materials/mohr_coulomb.h>
+#include <fsgmpm/materials/principal_stresses.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -365,6 +371,10 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
           for (unsigned int i = 0; i < 3; ++i)
             for (unsigned int j = i; j < 3; ++j)
               trial[i][j] = uniform(-0.75, 0.75) * scale;
+          // Every other trial in plane strain (the 2D points' stresses):
+          // the return's closed-form principal stresses.
+          if (trial_no % 2 == 1)
+            trial[0][2] = trial[1][2] = 0;
           trial += uniform(-1, 0.4) * scale * unit_symmetric_tensor<3>();
           MohrCoulomb::Return kind;
           const auto          s = m.return_mapping(trial, kind);
@@ -438,4 +448,113 @@ TEST(MohrCoulomb, RandomTrialsReturnToTheClosestPointInTheEnergyNorm)
   // Every kind of return is exercised.
   for (const unsigned int n : counts)
     EXPECT_GE(n, 10u);
+}
+
+
+
+// The principal stresses of a plane-strain stress in closed form
+// (principal_stresses(), used by the return mapping) against deal.II's
+// eigenvectors() (QL with implicit shifts): the values to 4e-15 of the
+// tensor's size (measured 1.6e-15), the directions unit and orthogonal to
+// 1e-15, the tensor rebuilt from them to 1e-15, and each direction
+// deal.II's up to its sign where the values are apart. Against the values
+// in extended precision (long double), the closed form's error is printed
+// beside deal.II's and must not be larger than 1e-15. Random tensors (fixed
+// seed) and the degenerate ones: isotropic in the plane, no shear with either
+// diagonal entry the larger, s_zz equal to an in-plane value, zero.
+TEST(MohrCoulomb, PlaneStrainPrincipalStressesAreDealIIs)
+{
+  std::mt19937 generator(777);
+  auto         uniform = [&](const double a, const double b) {
+    return a + (b - a) * (generator() / 4294967296.);
+  };
+  std::vector<SymmetricTensor<2, 3>> cases;
+  for (unsigned int k = 0; k < 2000; ++k)
+    {
+      SymmetricTensor<2, 3> s;
+      s[0][0] = uniform(-1e6, 1e5);
+      s[1][1] = uniform(-1e6, 1e5);
+      s[2][2] = uniform(-1e6, 1e5);
+      s[0][1] = uniform(-5e5, 5e5) * (k % 5 == 0 ? 1e-9 : 1.);
+      cases.push_back(s);
+    }
+  const auto diagonal = [](const double a, const double b, const double c) {
+    SymmetricTensor<2, 3> s;
+    s[0][0] = a;
+    s[1][1] = b;
+    s[2][2] = c;
+    return s;
+  };
+  cases.push_back(diagonal(-3e5, -3e5, -1e5));
+  cases.push_back(diagonal(-1e5, -4e5, -2e5));
+  cases.push_back(diagonal(-4e5, -1e5, -2e5));
+  cases.push_back(diagonal(-2e5, -1e5, -2e5));
+  cases.push_back(diagonal(0, 0, 0));
+  double worst_value = 0, worst_unit = 0, worst_rebuilt = 0, worst_axis = 0;
+  double worst_mine = 0, worst_dealii = 0; // against extended precision
+  for (const auto &s : cases)
+    {
+      const auto            mine = principal_stresses(s);
+      const auto            ref  = eigenvectors(s);
+      const double          size = std::max(s.norm(), 1e-300);
+      SymmetricTensor<2, 3> rebuilt;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          worst_value = std::max(worst_value,
+                                 std::abs(mine[i].first - ref[i].first) / size);
+          worst_unit
+            = std::max(worst_unit, std::abs(mine[i].second.norm() - 1));
+          worst_unit
+            = std::max(worst_unit,
+                       std::abs(mine[i].second * mine[(i + 1) % 3].second));
+          rebuilt
+            += mine[i].first
+               * symmetrize(outer_product(mine[i].second, mine[i].second));
+          const double gap_below
+            = i == 0 ? 1e300 : ref[i - 1].first - ref[i].first;
+          const double gap_above
+            = i == 2 ? 1e300 : ref[i].first - ref[i + 1].first;
+          if (std::min(gap_below, gap_above) > 1e-6 * size)
+            worst_axis = std::max(worst_axis,
+                                  1 - std::abs(mine[i].second * ref[i].second));
+        }
+      worst_rebuilt = std::max(worst_rebuilt, (rebuilt - s).norm() / size);
+      // The in-plane values and s_zz in long double, sorted descending.
+      const long double m = 0.5L * ((long double)s[0][0] + s[1][1]);
+      const long double h = 0.5L * ((long double)s[0][0] - s[1][1]);
+      const long double r
+        = std::sqrt(h * h + (long double)s[0][1] * (long double)s[0][1]);
+      std::array<long double, 3> exact = {{m + r, m - r, s[2][2]}};
+      std::sort(exact.begin(), exact.end(), std::greater<long double>());
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          worst_mine
+            = std::max(worst_mine,
+                       double(std::abs(mine[i].first - exact[i]) / size));
+          worst_dealii
+            = std::max(worst_dealii,
+                       double(std::abs(ref[i].first - exact[i]) / size));
+        }
+      for (unsigned int i = 0; i < 2; ++i)
+        EXPECT_GE(mine[i].first, mine[i + 1].first);
+    }
+  std::cout << "[ measured ] values " << worst_value << ", unit/orthogonal "
+            << worst_unit << ", rebuilt " << worst_rebuilt
+            << ", axes 1 - |cos| " << worst_axis
+            << "; against long double: closed form " << worst_mine
+            << ", deal.II " << worst_dealii << std::endl;
+  EXPECT_LT(worst_value, 4e-15);
+  EXPECT_LT(worst_mine, 1e-15);
+  EXPECT_LT(worst_unit, 1e-15);
+  EXPECT_LT(worst_rebuilt, 1e-15);
+  EXPECT_LT(worst_axis, 1e-12);
+  // A tensor with out-of-plane shear is deal.II's own answer.
+  SymmetricTensor<2, 3> general = diagonal(-1e5, -2e5, -3e5);
+  general[0][2]                 = 4e4;
+  const auto a = principal_stresses(general), b = eigenvectors(general);
+  for (unsigned int i = 0; i < 3; ++i)
+    {
+      EXPECT_EQ(a[i].first, b[i].first);
+      EXPECT_EQ(a[i].second, b[i].second);
+    }
 }
