@@ -4,7 +4,6 @@
 #include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace fsgmpm
 {
@@ -58,16 +57,13 @@ namespace fsgmpm
         if (y >= row_height && x >= column_width)
           return;
         const double half_spacing
-          = 0.5
-            * (dim == 2 ? std::sqrt(particles.volume[p])
-                        : std::cbrt(particles.volume[p]));
+          = half_point_spacing<dim>(particles.volume[p]);
         if (y < row_height)
           m[0] = std::max(m[0], x + half_spacing);
         if (x < column_width)
           m[1] = std::max(m[1], y + half_spacing);
       });
-    const double front = maxima[0], height = maxima[1];
-    return {front, height};
+    return {maxima[0], maxima[1]}; // front, height
   }
 
   template class DamBreakMonitor<2>;

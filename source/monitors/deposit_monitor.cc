@@ -3,7 +3,6 @@
 #include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace fsgmpm
 {
@@ -25,9 +24,7 @@ namespace fsgmpm
     const auto maxima = CellLoops::parallel_maxima<2>(
       particles.size(), {{0., 0.}}, [&](const unsigned int p, auto &m) {
         const double half_spacing
-          = 0.5
-            * (dim == 2 ? std::sqrt(particles.volume[p])
-                        : std::cbrt(particles.volume[p]));
+          = half_point_spacing<dim>(particles.volume[p]);
         const double x = particles.position[p][0] - wall_x;
         const double y = particles.position[p][1] - base_y;
         // A point resting on the base makes the deposit one spacing thick.
@@ -35,8 +32,7 @@ namespace fsgmpm
           m[0] = std::max(m[0], x + half_spacing);
         m[1] = std::max(m[1], y + half_spacing);
       });
-    const double runout = maxima[0], top = maxima[1];
-    return {runout, top};
+    return {maxima[0], maxima[1]}; // run-out, top
   }
 
   template class DepositMonitor<2>;

@@ -8,6 +8,7 @@
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/particles/particle_store.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,16 @@ namespace fsgmpm
     double       base_y         = 0; ///< Monitors/Base position
     bool         has_membrane   = false;
   };
+
+  /// Half the spacing V^(1/dim) of a point of volume @p volume: what a
+  /// point adds to a front or a height beyond its centre (dam_break,
+  /// deposit).
+  template <int dim>
+  inline double
+  half_point_spacing(const double volume)
+  {
+    return 0.5 * (dim == 2 ? std::sqrt(volume) : std::cbrt(volume));
+  }
 
   /// What a scene monitor sees each time it is evaluated.
   template <int dim>
