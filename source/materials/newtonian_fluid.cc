@@ -157,6 +157,21 @@ namespace fsgmpm
 
 
 
+  void
+  NewtonianFluid::wave_speeds(const double      *rho,
+                              double            *speed,
+                              const unsigned int n) const
+  {
+    if (!is_this_class() || law != PressureLaw::linear)
+      return Material::wave_speeds(rho, speed, n);
+    // wave_speed() of the linear law, sqrt(K / rho): no call and no branch
+    // per point, so SSE2 takes two points per instruction.
+    for (unsigned int i = 0; i < n; ++i)
+      speed[i] = std::sqrt(K / rho[i]);
+  }
+
+
+
   double
   NewtonianFluid::strain_energy_density(const SymmetricTensor<2, 3> &s) const
   {

@@ -19,20 +19,29 @@
 // - CompensatedSum: the monitors' sums over points agree to a few roundings
 //   whatever the order of the terms and however they are split, and the
 //   parallel sums in chunks do not depend on the number of threads.
+// - Stages::stable_time_step: the smallest cell bound h / max_p s_p over
+//   the occupied cells, with the signal speed s_p = c(rho_p) + |v_p| +
+//   2 d nu / (rho_p h), and the cells' stiffness sum_p V_p rho_p s_p^2,
+//   the bits of a loop over the points (1 and 2 threads, 2D and 3D).
 
 #include <fsgmpm/base/compensated_sum.h>
+#include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/materials/linear_elastic.h>
+#include <fsgmpm/materials/newtonian_fluid.h>
+#include <fsgmpm/particles/particle_store.h>
 #include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/energy_balance.h>
 #include <fsgmpm/run/output_schedule.h>
 #include <fsgmpm/run/time_step_control.h>
 #include <fsgmpm/step/cell_loops.h>
+#include <fsgmpm/step/stages.h>
 #include <gtest/gtest.h>
 
 #include "test_utilities.h"
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <utility>
 
 using namespace fsgmpm;
@@ -422,4 +431,113 @@ TEST(CellLoops, ParallelMaximaAreTheSerialOnes)
   EXPECT_EQ(two_threads, serial);
   EXPECT_GT(serial[0], -1.);
   EXPECT_EQ(maxima(0), (std::array<double, 2>{{-1., 0.}}));
+}
+
+
+
+namespace
+{
+  // Stages::stable_time_step against a plain loop over the points of each
+  // occupied cell. Runs of four materials in random order: a linear fluid
+  // (its own vectorised wave speeds), a power-law fluid (20 Pa s: its
+  // viscous limit shows in the bits) and a fluid whose derived class
+  // changes the wave speed (both take wave_speed() per point), and an
+  // elastic solid (the default, no viscosity).
+  template <int dim>
+  void
+  check_stable_time_step()
+  {
+    struct StiffFluid : NewtonianFluid
+    {
+      using NewtonianFluid::NewtonianFluid;
+      double
+      wave_speed(const double rho) const override
+      {
+        return 2. * NewtonianFluid::wave_speed(rho);
+      }
+    };
+    std::vector<std::unique_ptr<Material>> materials;
+    materials.push_back(std::make_unique<NewtonianFluid>(
+      2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+    materials.push_back(std::make_unique<NewtonianFluid>(
+      2.5e6, 20., 1000, NewtonianFluid::PressureLaw::power, 7, false));
+    materials.push_back(std::make_unique<StiffFluid>(
+      1e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+    materials.push_back(std::make_unique<LinearElastic>(1e7, 0.3, 2000));
+
+    const auto         grid = test_tools::make_unit_box_grid<dim>(4);
+    ParticleStore<dim> particles;
+    std::mt19937       rng(11 + dim);
+    std::uniform_real_distribution<double> u(0.02, 0.98), f(0.9, 1.1), v(-3, 3);
+    std::uniform_int_distribution<unsigned int> material(0, 3);
+    for (unsigned int n = 0; n < 600; ++n)
+      {
+        Point<dim>     x;
+        Tensor<1, dim> velocity;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            x[d]        = u(rng);
+            velocity[d] = v(rng);
+          }
+        const unsigned int c = grid->find_cell_brute_force(x, 1e-12);
+        ASSERT_NE(c, BackgroundGrid<dim>::invalid);
+        const unsigned int m = (n % 5 == 0) ? material(rng) : 0;
+        particles.add(x,
+                      c,
+                      1e-3 * f(rng) * materials[m]->reference_density(),
+                      1e-3 * f(rng),
+                      velocity,
+                      {},
+                      m,
+                      0);
+      }
+    particles.sort_by_cell(grid->n_cells());
+
+    double              expected_dt = std::numeric_limits<double>::max();
+    std::vector<double> expected_stiffness(grid->n_cells(), 0.);
+    for (const unsigned int c : particles.occupied_cells)
+      {
+        const double h     = grid->min_altitude(c);
+        double       speed = 0;
+        for (unsigned int p = particles.cell_begin(c);
+             p < particles.cell_end(c);
+             ++p)
+          {
+            const Material &mat = *materials[particles.material_id[p]];
+            const double    rho = particles.mass[p] / particles.volume[p];
+            const double s = mat.wave_speed(rho) + particles.velocity[p].norm()
+                             + 2. * dim * mat.viscosity() / (rho * h);
+            speed = std::max(speed, s);
+            expected_stiffness[c] += particles.volume[p] * rho * s * s;
+          }
+        expected_dt = std::min(expected_dt, h / speed);
+      }
+    const auto [one_thread, two_threads] = on_one_and_two_threads([&]() {
+      std::vector<double> stiffness;
+      const double        dt = Stages::stable_time_step(
+        *grid, particles, materials, 0.5, &stiffness);
+      return std::make_pair(dt, stiffness);
+    });
+    EXPECT_EQ(one_thread.first, 0.5 * expected_dt);
+    EXPECT_EQ(two_threads.first, 0.5 * expected_dt);
+    EXPECT_EQ(one_thread.second, expected_stiffness);
+    EXPECT_EQ(two_threads.second, expected_stiffness);
+    // Not a vacuous comparison: every material is met, and the viscous
+    // and advective parts matter.
+    std::array<unsigned int, 4> count = {};
+    for (const auto m : particles.material_id)
+      ++count[m];
+    for (const unsigned int n : count)
+      EXPECT_GT(n, 10u);
+    EXPECT_EQ(Stages::stable_time_step(*grid, particles, materials, 1.),
+              expected_dt);
+  }
+} // namespace
+
+
+
+TEST(StableTimeStep, IsThePointsBoundOverRunsOfMaterials)
+{
+  check_stable_time_step<2>();
+  check_stable_time_step<3>();
 }

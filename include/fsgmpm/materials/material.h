@@ -32,8 +32,8 @@ namespace fsgmpm
    * Interface of a constitutive model. A material updates the Cauchy stress
    * (tension positive, 3x3 also in 2D) of a contiguous run of points that
    * all belong to it; one virtual call per run, not per point (so too the
-   * energies' add_strain_energy(); the time step's wave_speed() and the
-   * stress stage's admissible_volume_ratio() are still called per point).
+   * energies' add_strain_energy() and the time step's wave_speeds(); the
+   * stress stage's admissible_volume_ratio() is still called per point).
    * A material knows nothing about the grid.
    */
   class Material
@@ -54,6 +54,19 @@ namespace fsgmpm
     /// Fastest wave speed at the given mass density (for the time step).
     virtual double
     wave_speed(const double density) const = 0;
+
+    /// speed[i] = wave_speed(density[i]) for i < n: the time step calls
+    /// this once per run of points of the material. The default calls
+    /// wave_speed() per point; a material whose speed is a few operations
+    /// overrides it with a loop the compiler vectorises (the same bits).
+    virtual void
+    wave_speeds(const double      *density,
+                double            *speed,
+                const unsigned int n) const
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        speed[i] = wave_speed(density[i]);
+    }
 
     /// Stored (recoverable) energy per unit volume at the given stress.
     virtual double
