@@ -125,23 +125,23 @@ namespace fsgmpm
                                   const double /*dt*/) const
   {
     for (unsigned int i = 0; i < n; ++i)
-      {
-        double p = pressure(kin[i].volume_ratio);
-        if (!allow_tension)
-          p = std::max(p, 0.);
-        // Eq. (13): sigma = -p I + 2 mu dev(d), written out component by
-        // component (the same operations as deviator(), cheaper).
-        const SymmetricTensor<2, 3> &d      = kin[i].strain_rate;
-        const double                 two_mu = 2. * mu;
-        const double                 mean   = trace(d) / 3;
-        SymmetricTensor<2, 3>       &s      = stress[i];
-        for (unsigned int a = 0; a < 3; ++a)
-          {
-            s[a][a] = two_mu * (d[a][a] - mean) - p;
-            for (unsigned int b = a + 1; b < 3; ++b)
-              s[a][b] = two_mu * d[a][b];
-          }
-      }
+      fluid_stress(kin[i].strain_rate, kin[i].volume_ratio, stress[i]);
+  }
+
+
+
+  void
+  NewtonianFluid::update_stresses_of_run(const PointKinematics &shared,
+                                         const double          *volume_ratio,
+                                         SymmetricTensor<2, 3> *stress,
+                                         const unsigned int     n,
+                                         const double           dt) const
+  {
+    if (!is_this_class())
+      return Material::update_stresses_of_run(
+        shared, volume_ratio, stress, n, dt);
+    for (unsigned int i = 0; i < n; ++i)
+      fluid_stress(shared.strain_rate, volume_ratio[i], stress[i]);
   }
 
 

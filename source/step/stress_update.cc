@@ -55,89 +55,111 @@ namespace fsgmpm
             }
         return incremental_rotation(spin, dt);
       };
-      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        // Without the projection every point of the cell has the cell's
-        // strain rate, and its rotation where a material needs it (computed
-        // at the first such run). With it every point gets its own below.
-        Tensor<2, dim>        cell_L;
-        SymmetricTensor<2, 3> cell_strain_rate;
-        if (!per_point)
+      // The kinematics of a run of points of material m from its velocity
+      // gradient L (the cell's, or a point's with the projection): the
+      // strain rate with Eq. (25)'s smoothed volumetric part for NMD
+      // materials, the rotation where the material reads it.
+      const auto run_kinematics = [&](const unsigned int           c,
+                                      const unsigned int           m,
+                                      const Tensor<2, dim>        &L,
+                                      const SymmetricTensor<2, 3> &strain_rate,
+                                      const Tensor<2, 3>          *rotation,
+                                      PointKinematics             &kin) {
+        kin.strain_rate = strain_rate;
+        kin.rotation
+          = rotates[m] ? (rotation ? *rotation : rotation_of(L)) : identity;
+        if (options[m].nmd)
           {
-            cell_L           = smoothing.cell_velocity_gradient(c);
-            cell_strain_rate = strain_rate_of(cell_L);
+            // Eq. (25): the smoothed rate at the cell centre replaces the
+            // volumetric part; in plane strain only xx and yy change, so
+            // that the zz strain rate stays zero.
+            double smoothed = 0;
+            for (const unsigned int i : grid.cell_nodes[c])
+              smoothed += smoothing.average(m, i);
+            smoothed /= (dim + 1);
+            const double correction = (smoothed - trace(kin.strain_rate)) / dim;
+            for (unsigned int d = 0; d < dim; ++d)
+              kin.strain_rate[d][d] += correction;
           }
-        std::optional<Tensor<2, 3>> cell_rotation;
-
-        // Before any volume changes: the share p2g used.
-        const double theta
-          = per_point ? CellLoops::projection_share(grid, particles, c) : 0.;
-        std::optional<CellGeometry<dim>> geometry;
-        if (per_point)
-          geometry.emplace(CellLoops::geometry(grid, particles, c));
-        thread_local std::vector<PointKinematics> kinematics;
+      };
+      // Volume (and so density) with the same volumetric rate as the
+      // pressure: point p's volume ratio.
+      const auto update_volume = [&](const unsigned int p,
+                                     const unsigned int m,
+                                     const double       volume_factor) {
+        const double J = materials[m]->admissible_volume_ratio(
+          particles.volume[p] * volume_factor / particles.reference_volume[p]);
+        particles.volume[p] = J * particles.reference_volume[p];
+        return J;
+      };
+      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
         const unsigned int begin = particles.cell_begin(c);
         const unsigned int end   = particles.cell_end(c);
+        if (!per_point)
+          {
+            // Every point of the cell has the cell's strain rate, and its
+            // rotation where a material needs it (computed at the first
+            // such run): a run of points of one material shares its
+            // kinematics and one exp, and the material gets them once
+            // with the points' volume ratios (update_stresses_of_run()).
+            const Tensor<2, dim>        L = smoothing.cell_velocity_gradient(c);
+            const SymmetricTensor<2, 3> strain_rate = strain_rate_of(L);
+            std::optional<Tensor<2, 3>> cell_rotation;
+            thread_local std::vector<double> volume_ratio;
+            if (volume_ratio.size() < end - begin)
+              volume_ratio.resize(end - begin);
+            for (unsigned int run = begin; run < end;)
+              {
+                const unsigned int last = particles.material_run_end(run, end);
+                const unsigned int m    = particles.material_id[run];
+                if (rotates[m] && !cell_rotation)
+                  cell_rotation = rotation_of(L);
+                PointKinematics kin;
+                run_kinematics(c,
+                               m,
+                               L,
+                               strain_rate,
+                               cell_rotation ? &*cell_rotation : nullptr,
+                               kin);
+                const double volume_factor
+                  = std::exp(dt * trace(kin.strain_rate));
+                for (unsigned int p = run; p < last; ++p)
+                  volume_ratio[p - begin] = update_volume(p, m, volume_factor);
+                materials[m]->update_stresses_of_run(kin,
+                                                     volume_ratio.data()
+                                                       + (run - begin),
+                                                     particles.stress.data()
+                                                       + run,
+                                                     last - run,
+                                                     dt);
+                run = last;
+              }
+            return;
+          }
+
+        // With the projection every point has its own velocity gradient,
+        // from the share p2g used (before any volume changes).
+        const double theta = CellLoops::projection_share(grid, particles, c);
+        const CellGeometry<dim> geometry
+          = CellLoops::geometry(grid, particles, c);
+        thread_local std::vector<PointKinematics> kinematics;
         // Sized, not filled: each point's entry is written below once.
         if (kinematics.size() < end - begin)
           kinematics.resize(end - begin);
-        // The volumetric strain rate and its exponential are those of the
-        // cell and material unless every point has its own kinematics: one
-        // exp per run of points of the same material, not per point.
-        unsigned int run_material  = numbers::invalid_unsigned_int;
-        double       volume_factor = 1.;
         for (unsigned int p = begin; p < end; ++p)
           {
-            PointKinematics   &kin = kinematics[p - begin];
-            const unsigned int m   = particles.material_id[p];
-            if (per_point || m != run_material)
-              {
-                if (per_point)
-                  {
-                    const Tensor<2, dim> L
-                      = point_velocity_gradient(grid,
-                                                smoothing,
-                                                c,
-                                                theta,
-                                                geometry->barycentric(
-                                                  particles.position[p]));
-                    kin.strain_rate = strain_rate_of(L);
-                    kin.rotation    = rotates[m] ? rotation_of(L) : identity;
-                  }
-                else
-                  {
-                    kin.strain_rate = cell_strain_rate;
-                    if (rotates[m] && !cell_rotation)
-                      cell_rotation = rotation_of(cell_L);
-                    kin.rotation = rotates[m] ? *cell_rotation : identity;
-                  }
-                if (options[m].nmd)
-                  {
-                    // Eq. (25): the smoothed rate at the cell centre
-                    // replaces the volumetric part; in plane strain only xx
-                    // and yy change, so that the zz strain rate stays zero.
-                    double smoothed = 0;
-                    for (const unsigned int i : grid.cell_nodes[c])
-                      smoothed += smoothing.average(m, i);
-                    smoothed /= (dim + 1);
-                    const double correction
-                      = (smoothed - trace(kin.strain_rate)) / dim;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      kin.strain_rate[d][d] += correction;
-                  }
-                volume_factor = std::exp(dt * trace(kin.strain_rate));
-                run_material  = m;
-              }
-            else
-              // The run's kinematics (with its NMD rate), as the point
-              // before; its volume ratio is this point's below.
-              kin = kinematics[p - begin - 1];
-            // Volume (and so density) with the same volumetric rate as the
-            // pressure.
-            const double J = materials[m]->admissible_volume_ratio(
-              particles.volume[p] * volume_factor
-              / particles.reference_volume[p]);
-            particles.volume[p] = J * particles.reference_volume[p];
-            kin.volume_ratio    = J;
+            PointKinematics     &kin = kinematics[p - begin];
+            const unsigned int   m   = particles.material_id[p];
+            const Tensor<2, dim> L
+              = point_velocity_gradient(grid,
+                                        smoothing,
+                                        c,
+                                        theta,
+                                        geometry.barycentric(
+                                          particles.position[p]));
+            run_kinematics(c, m, L, strain_rate_of(L), nullptr, kin);
+            kin.volume_ratio
+              = update_volume(p, m, std::exp(dt * trace(kin.strain_rate)));
           }
 
         // One call per run of points of the same material.

@@ -3,7 +3,12 @@
 // (Eq. 15) with volume_ratio_for_pressure as their exact inverse; the
 // viscous stress 2 mu dev(d) of Eq. (13) in simple shear; the tension
 // cut-off and the admissible volume ratio; the wave speed sqrt(K_t/rho).
+// The calls per run of points (the stress stage's update_stresses_of_run()
+// and the time step's wave_speeds()) give the bits of the calls per point,
+// for the fluid's own loops, for the materials that take the defaults and
+// for a class derived from the fluid.
 
+#include <fsgmpm/materials/linear_elastic.h>
 #include <fsgmpm/materials/newtonian_fluid.h>
 #include <gtest/gtest.h>
 
@@ -156,4 +161,93 @@ TEST(NewtonianFluid, StrainEnergyOfARunIsItsPointsSummedInOrder)
             derived_expected);
   EXPECT_GT(derived_expected,
             fluid.add_strain_energy(stress.data(), volume.data(), 5, 0.));
+}
+
+
+
+// update_stresses_of_run(): a run of 37 points (past the default's blocks
+// of 16) sharing a strain rate and rotation, each with its volume ratio,
+// against update_stresses() with the kinematics copied per point. The
+// fluid's own loop (linear law, with and without tension; power law), the
+// default (an elastic solid, which reads the rotation and its old
+// stresses), and a class derived from the fluid that changes
+// update_stresses() (as step-2's Bingham mud does), through the base
+// reference. The same for wave_speeds() against wave_speed().
+TEST(NewtonianFluid, RunCallsAreTheirPointsCalls)
+{
+  struct ShearThickFluid : NewtonianFluid
+  {
+    using NewtonianFluid::NewtonianFluid;
+    void
+    update_stresses(const PointKinematics *kinematics,
+                    SymmetricTensor<2, 3> *stress,
+                    const unsigned int     n,
+                    const double           dt) const override
+    {
+      NewtonianFluid::update_stresses(kinematics, stress, n, dt);
+      for (unsigned int i = 0; i < n; ++i)
+        stress[i][0][1] *= 1. + kinematics[i].volume_ratio;
+    }
+    double
+    wave_speed(const double rho) const override
+    {
+      return 3. * NewtonianFluid::wave_speed(rho);
+    }
+  };
+  std::vector<std::unique_ptr<Material>> materials;
+  materials.push_back(std::make_unique<NewtonianFluid>(
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+  materials.push_back(std::make_unique<NewtonianFluid>(
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, true));
+  materials.push_back(std::make_unique<NewtonianFluid>(
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::power, 7, false));
+  materials.push_back(std::make_unique<LinearElastic>(1e7, 0.3, 2000));
+  materials.push_back(std::make_unique<ShearThickFluid>(
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+
+  const unsigned int n = 37;
+  PointKinematics    shared;
+  for (unsigned int a = 0; a < 3; ++a)
+    for (unsigned int b = a; b < 3; ++b)
+      shared.strain_rate[a][b] = 0.3 * a - 0.7 * b + 0.11;
+  const double angle    = 0.01;
+  shared.rotation       = unit_symmetric_tensor<3>();
+  shared.rotation[0][0] = shared.rotation[1][1] = std::cos(angle);
+  shared.rotation[0][1]                         = -std::sin(angle);
+  shared.rotation[1][0]                         = std::sin(angle);
+  shared.volume_ratio                           = -1; // not read
+  std::vector<double> J(n), rho(n);
+  for (unsigned int i = 0; i < n; ++i)
+    {
+      J[i]   = 0.995 + 0.0003 * i; // both sides of 1: tension cut-off
+      rho[i] = 1000. / J[i];
+    }
+  for (const auto &material : materials)
+    {
+      std::vector<SymmetricTensor<2, 3>> by_run(n), by_point(n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int a = 0; a < 3; ++a)
+          by_run[i][a][a] = by_point[i][a][a] = -1e3 * (i + a);
+      std::vector<PointKinematics> kinematics(n, shared);
+      for (unsigned int i = 0; i < n; ++i)
+        kinematics[i].volume_ratio = J[i];
+      material->update_stresses(kinematics.data(), by_point.data(), n, 1e-4);
+      material->update_stresses_of_run(
+        shared, J.data(), by_run.data(), n, 1e-4);
+      EXPECT_EQ(by_run, by_point) << material->name();
+
+      std::vector<double> speeds(n);
+      material->wave_speeds(rho.data(), speeds.data(), n);
+      for (unsigned int i = 0; i < n; ++i)
+        EXPECT_EQ(speeds[i], material->wave_speed(rho[i])) << material->name();
+    }
+  // The derived class's own update and speed, not the fluid's loops.
+  SymmetricTensor<2, 3> derived, fluid;
+  materials[4]->update_stresses_of_run(shared, J.data(), &derived, 1, 1e-4);
+  materials[0]->update_stresses_of_run(shared, J.data(), &fluid, 1, 1e-4);
+  EXPECT_NE(derived[0][1], fluid[0][1]);
+  double derived_speed, fluid_speed;
+  materials[4]->wave_speeds(rho.data(), &derived_speed, 1);
+  materials[0]->wave_speeds(rho.data(), &fluid_speed, 1);
+  EXPECT_EQ(derived_speed, 3. * fluid_speed);
 }

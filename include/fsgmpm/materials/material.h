@@ -4,6 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <string>
 
 namespace fsgmpm
@@ -50,6 +51,38 @@ namespace fsgmpm
                     SymmetricTensor<2, 3> *stress,
                     const unsigned int     n,
                     const double           dt) const = 0;
+
+    /**
+     * update_stresses() of n points that share their strain rate and
+     * rotation (those of @p shared, whose volume_ratio is not read), point
+     * i with the volume ratio @p volume_ratio[i]: the stress stage's call
+     * for a cell's run of points of the material (without the nodal
+     * projection, a cell's points share its velocity gradient). The
+     * default copies @p shared for each point and calls update_stresses();
+     * a material that reads little of the kinematics overrides it without
+     * the copies (128 B per point).
+     */
+    virtual void
+    update_stresses_of_run(const PointKinematics &shared,
+                           const double          *volume_ratio,
+                           SymmetricTensor<2, 3> *stress,
+                           const unsigned int     n,
+                           const double           dt) const
+    {
+      // In blocks on the stack (no allocation, no thread-local storage).
+      constexpr unsigned int block = 16;
+      PointKinematics        kinematics[block];
+      for (unsigned int b = 0; b < n; b += block)
+        {
+          const unsigned int m = std::min(block, n - b);
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              kinematics[i]              = shared;
+              kinematics[i].volume_ratio = volume_ratio[b + i];
+            }
+          update_stresses(kinematics, stress + b, m, dt);
+        }
+    }
 
     /// Fastest wave speed at the given mass density (for the time step).
     virtual double

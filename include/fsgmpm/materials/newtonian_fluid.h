@@ -58,6 +58,16 @@ namespace fsgmpm
                     const unsigned int     n,
                     const double           dt) const override;
 
+    /// update_stresses() with the run's one strain rate, without copies.
+    /// A derived class (step-2's Bingham mud) gets the base class's copies
+    /// and its own update_stresses().
+    void
+    update_stresses_of_run(const PointKinematics &shared,
+                           const double          *volume_ratio,
+                           SymmetricTensor<2, 3> *stress,
+                           const unsigned int     n,
+                           const double           dt) const override;
+
     double
     wave_speed(const double density) const override;
 
@@ -131,6 +141,27 @@ namespace fsgmpm
     std::string path;
 
   private:
+    /// Eq. (13): sigma = -p I + 2 mu dev(d) at the volume ratio J, written
+    /// out component by component (the same operations as deviator(),
+    /// cheaper).
+    void
+    fluid_stress(const SymmetricTensor<2, 3> &d,
+                 const double                 J,
+                 SymmetricTensor<2, 3>       &s) const
+    {
+      double p = pressure(J);
+      if (!allow_tension)
+        p = std::max(p, 0.);
+      const double two_mu = 2. * mu;
+      const double mean   = trace(d) / 3;
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          s[a][a] = two_mu * (d[a][a] - mean) - p;
+          for (unsigned int b = a + 1; b < 3; ++b)
+            s[a][b] = two_mu * d[a][b];
+        }
+    }
+
     /// Whether this object is a NewtonianFluid itself, not of a class
     /// derived from it: only then do the overrides above that skip
     /// strain_energy_density() or the rotation apply.
