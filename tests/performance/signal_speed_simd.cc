@@ -30,55 +30,33 @@ namespace
 
   constexpr double K = 2.5e6, viscous = 4 * 8.9e-4;
 
-#define SIGNAL_SPEED_LOOP                                                  \
-  for (std::size_t p = 0; p < n; ++p)                                      \
-    {                                                                      \
-      const double rho = m[p] / V[p];                                      \
-      s[p] = std::sqrt(K / rho) + std::sqrt(vx[p] * vx[p] + vy[p] * vy[p]) \
-             + viscous / (rho * h[p]);                                     \
-    }                                                                      \
-  double largest = 0;                                                      \
-  for (std::size_t p = 0; p < n; ++p)                                      \
-    largest = std::max(largest, s[p]);                                     \
-  return largest;
-
-  __attribute__((optimize("no-tree-vectorize"), noinline)) double
-  scalar(const double *m,
-         const double *V,
-         const double *vx,
-         const double *vy,
-         const double *h,
-         double       *s,
-         std::size_t   n)
-  {
-    SIGNAL_SPEED_LOOP
+  // The same loop three times, compiled with different options.
+#define SIGNAL_SPEED_FUNCTION(name, ...)                                     \
+  __attribute__((__VA_ARGS__, noinline)) double name(const double *m,        \
+                                                     const double *V,        \
+                                                     const double *vx,       \
+                                                     const double *vy,       \
+                                                     const double *h,        \
+                                                     double       *s,        \
+                                                     std::size_t   n)        \
+  {                                                                          \
+    for (std::size_t p = 0; p < n; ++p)                                      \
+      {                                                                      \
+        const double rho = m[p] / V[p];                                      \
+        s[p] = std::sqrt(K / rho) + std::sqrt(vx[p] * vx[p] + vy[p] * vy[p]) \
+               + viscous / (rho * h[p]);                                     \
+      }                                                                      \
+    double largest = 0;                                                      \
+    for (std::size_t p = 0; p < n; ++p)                                      \
+      largest = std::max(largest, s[p]);                                     \
+    return largest;                                                          \
   }
 
-  __attribute__((optimize("tree-vectorize"), noinline)) double
-  sse2(const double *m,
-       const double *V,
-       const double *vx,
-       const double *vy,
-       const double *h,
-       double       *s,
-       std::size_t   n)
-  {
-    SIGNAL_SPEED_LOOP
-  }
-
+  SIGNAL_SPEED_FUNCTION(scalar, optimize("no-tree-vectorize"))
+  SIGNAL_SPEED_FUNCTION(sse2, optimize("tree-vectorize"))
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #  define FSGMPM_HAVE_AVX2_VARIANT 1
-  __attribute__((target("avx2"), optimize("tree-vectorize"), noinline)) double
-  avx2(const double *m,
-       const double *V,
-       const double *vx,
-       const double *vy,
-       const double *h,
-       double       *s,
-       std::size_t   n)
-  {
-    SIGNAL_SPEED_LOOP
-  }
+  SIGNAL_SPEED_FUNCTION(avx2, target("avx2"), optimize("tree-vectorize"))
 #endif
 
   template <typename Function>
