@@ -4,7 +4,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <algorithm>
 #include <string>
 
 namespace fsgmpm
@@ -67,22 +66,7 @@ namespace fsgmpm
                            const double          *volume_ratio,
                            SymmetricTensor<2, 3> *stress,
                            const unsigned int     n,
-                           const double           dt) const
-    {
-      // In blocks on the stack (no allocation, no thread-local storage).
-      constexpr unsigned int block = 16;
-      PointKinematics        kinematics[block];
-      for (unsigned int b = 0; b < n; b += block)
-        {
-          const unsigned int m = std::min(block, n - b);
-          for (unsigned int i = 0; i < m; ++i)
-            {
-              kinematics[i]              = shared;
-              kinematics[i].volume_ratio = volume_ratio[b + i];
-            }
-          update_stresses(kinematics, stress + b, m, dt);
-        }
-    }
+                           const double           dt) const;
 
     /// Fastest wave speed at the given mass density (for the time step).
     virtual double
