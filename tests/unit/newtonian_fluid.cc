@@ -165,9 +165,10 @@ TEST(NewtonianFluid, StrainEnergyOfARunIsItsPointsSummedInOrder)
 
 
 
-// update_stresses_of_run(): a run of 37 points (past the default's blocks
-// of 16) sharing a strain rate and rotation, each with its volume ratio,
-// against update_stresses() with the kinematics copied per point. The
+// update_stresses_of_run(): a run of 37 points (then of 1: the default
+// keeps its larger buffer) sharing a strain rate and rotation, each with
+// its volume ratio, against update_stresses() with the kinematics copied
+// per point. The
 // fluid's own loop (linear law, with and without tension; power law), the
 // default (an elastic solid, which reads the rotation and its old
 // stresses), and a class derived from the fluid that changes

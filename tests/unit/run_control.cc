@@ -22,7 +22,10 @@
 // - Stages::stable_time_step: the smallest cell bound h / max_p s_p over
 //   the occupied cells, with the signal speed s_p = c(rho_p) + |v_p| +
 //   2 d nu / (rho_p h), and the cells' stiffness sum_p V_p rho_p s_p^2,
-//   the bits of a loop over the points (1 and 2 threads, 2D and 3D).
+//   the bits of a loop over the points (1 and 2 threads, 2D and 3D, 600
+//   points: more than one block of the stage's vector loops), also with an
+//   empty cell's points appended after the sorted ones, as MPI's ghost
+//   copies are.
 
 #include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/background_grid.h>
