@@ -41,14 +41,17 @@ namespace fsgmpm
                   particles.position[p] += dx;
                   max_disp = std::max(max_disp, dx.norm_square());
                 }
-              cell_ratio[i] = std::sqrt(max_disp) / geometry.min_altitude();
+              // The ratio squared, (|dx| / h)^2 = |dx|^2 / h^2: no root or
+              // division per cell; one root of the largest below.
+              cell_ratio[i]
+                = max_disp * geometry.inverse_square_min_altitude();
             }
         },
         16);
       double ratio = 0;
       for (const double r : cell_ratio)
         ratio = std::max(ratio, r);
-      return ratio;
+      return std::sqrt(ratio);
     }
 
     template double

@@ -29,6 +29,7 @@
 
 #include <fsgmpm/base/compensated_sum.h>
 #include <fsgmpm/grid/background_grid.h>
+#include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/materials/linear_elastic.h>
 #include <fsgmpm/materials/newtonian_fluid.h>
 #include <fsgmpm/particles/particle_store.h>
@@ -43,6 +44,7 @@
 #include "test_utilities.h"
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <random>
 #include <utility>
@@ -581,4 +583,77 @@ TEST(StableTimeStep, IsThePointsBoundOverRunsOfMaterials)
 {
   check_stable_time_step<2>();
   check_stable_time_step<3>();
+}
+
+
+
+namespace
+{
+  // Stages::update_positions: x_p += dt sum_k lambda_k(x_p) v_k, and the
+  // returned guard ratio max_p |dx_p| / h_c (h_c the smallest altitude of
+  // the point's cell), computed there as the root of the largest squared
+  // ratio. Against a loop over the points, with an affine nodal velocity,
+  // so that the displacements differ from point to point; the ratio to a
+  // few roundings (it only guards, > 1 is unstable, and is not written).
+  template <int dim>
+  void
+  check_displacement_ratio()
+  {
+    const auto         grid = test_tools::make_unit_box_grid<dim>(4);
+    ParticleStore<dim> particles;
+    std::mt19937       rng(5 + dim);
+    std::uniform_real_distribution<double> u(0.02, 0.98);
+    for (unsigned int n = 0; n < 300; ++n)
+      {
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = u(rng);
+        particles.add(x,
+                      grid->find_cell_brute_force(x, 1e-12),
+                      1.,
+                      1.,
+                      Tensor<1, dim>(),
+                      {},
+                      0,
+                      0);
+      }
+    particles.sort_by_cell(grid->n_cells());
+    NodalFields<dim> nodes;
+    nodes.resize(grid->n_nodes());
+    for (unsigned int i = 0; i < grid->n_nodes(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        nodes.velocity[i][d] = 1. + d + 3. * grid->node_positions[i][0]
+                               - grid->node_positions[i][dim - 1];
+    const double dt = 0.01;
+
+    double                  expected = 0;
+    std::vector<Point<dim>> moved(particles.position);
+    for (const unsigned int c : particles.occupied_cells)
+      for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
+           ++p)
+        {
+          const auto     lambda = grid->barycentric(c, particles.position[p]);
+          Tensor<1, dim> dx;
+          for (unsigned int k = 0; k < dim + 1; ++k)
+            dx += lambda[k] * nodes.velocity[grid->cell_nodes[c][k]];
+          dx *= dt;
+          moved[p] += dx;
+          expected = std::max(expected, dx.norm() / grid->min_altitude(c));
+        }
+    const double ratio = Stages::update_positions(*grid, nodes, dt, particles);
+    std::cout << dim << "D displacement ratio " << ratio << ", relative to "
+              << "the loop's " << std::abs(ratio - expected) / expected
+              << std::endl;
+    EXPECT_EQ(particles.position, moved);
+    EXPECT_NEAR(ratio, expected, 4e-16 * expected);
+    EXPECT_GT(expected, 0.1); // not a vacuous comparison
+  }
+} // namespace
+
+
+
+TEST(PositionUpdate, DisplacementRatioIsTheLargestMoveOverItsCellsAltitude)
+{
+  check_displacement_ratio<2>();
+  check_displacement_ratio<3>();
 }

@@ -94,18 +94,27 @@ namespace fsgmpm
       return g;
     }
 
+    /// max_k |grad lambda_k|^2, the inverse square of the smallest
+    /// altitude: a bound on a length squared relative to the cell without
+    /// a root or a division (the position update's guard).
+    double
+    inverse_square_min_altitude() const
+    {
+      double     largest = 0;
+      const auto g       = shape_gradients();
+      for (unsigned int k = 0; k < dim + 1; ++k)
+        largest = std::max(largest, g[k].norm_square());
+      return largest;
+    }
+
     /// Smallest altitude, min_k 1/|grad lambda_k| (time step, guards),
     /// as 1/sqrt(max_k |grad lambda_k|^2): one root and one division, the
     /// same bits (rounded sqrt and division are monotone).
     double
     min_altitude() const
     {
-      double     largest = 0;
-      const auto g       = shape_gradients();
-      for (unsigned int k = 0; k < dim + 1; ++k)
-        largest = std::max(largest, g[k].norm_square());
       return std::min(std::numeric_limits<double>::max(),
-                      1. / std::sqrt(largest));
+                      1. / std::sqrt(inverse_square_min_altitude()));
     }
 
     Point<dim>     x0;
