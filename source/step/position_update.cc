@@ -14,7 +14,8 @@ namespace fsgmpm
                      const double               dt,
                      ParticleStore<dim>        &particles)
     {
-      std::vector<double> cell_ratio(particles.occupied_cells.size(), 0.);
+      std::vector<double> cell_ratio_squared(particles.occupied_cells.size(),
+                                             0.);
       const auto         &cells = particles.occupied_cells;
       CellLoops::parallel_range(
         cells.size(),
@@ -43,15 +44,15 @@ namespace fsgmpm
                 }
               // The ratio squared, (|dx| / h)^2 = |dx|^2 / h^2: no root or
               // division per cell; one root of the largest below.
-              cell_ratio[i]
+              cell_ratio_squared[i]
                 = max_disp * geometry.inverse_square_min_altitude();
             }
         },
         16);
-      double ratio = 0;
-      for (const double r : cell_ratio)
-        ratio = std::max(ratio, r);
-      return std::sqrt(ratio);
+      double ratio_squared = 0;
+      for (const double r : cell_ratio_squared)
+        ratio_squared = std::max(ratio_squared, r);
+      return std::sqrt(ratio_squared);
     }
 
     template double
