@@ -66,14 +66,8 @@ namespace fsgmpm
             // into one signal speed.
             const double viscous = 2. * dim * mat.viscosity();
             for (unsigned int q = k; q < last; ++q)
-              {
-                // |v| as Tensor::norm() sums it, from 0 in axis order.
-                double v2 = 0;
-                for (unsigned int d = 0; d < dim; ++d)
-                  v2 += velocity[q][d] * velocity[q][d];
-                signal[q]
-                  = signal[q] + std::sqrt(v2) + viscous / (rho[q] * point_h[q]);
-              }
+              signal[q] = signal[q] + velocity[q].norm()
+                          + viscous / (rho[q] * point_h[q]);
             k = last;
           }
         for (unsigned int i = b; i < e; ++i)

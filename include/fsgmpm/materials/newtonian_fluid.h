@@ -71,9 +71,9 @@ namespace fsgmpm
     double
     wave_speed(const double density) const override;
 
-    /// wave_speed()'s arithmetic in a loop the compiler vectorises (the
-    /// linear law; the power law's pow() per point). A derived class that
-    /// overrides wave_speed() gets the base class's call per point.
+    /// wave_speed() in a loop without a call per point, which the compiler
+    /// vectorises for the linear law. A derived class that overrides
+    /// wave_speed() gets the base class's virtual call per point.
     void
     wave_speeds(const double      *density,
                 double            *speed,
