@@ -56,6 +56,43 @@ namespace fsgmpm
     }
 
     /**
+     * A reduction over the items [0, n) in fixed chunks of @p chunk, in
+     * parallel: each chunk starts from @p initial, f(a, value) takes item a
+     * in, in order, and merge(total, chunk_value) combines the chunks' values
+     * in chunk order, starting from @p initial. The chunks do not depend on
+     * the number of threads, so neither does the result.
+     */
+    template <typename Value, typename Function, typename Merge>
+    Value
+    chunked_reduction(const unsigned int n,
+                      const unsigned int chunk,
+                      const Value       &initial,
+                      const Function    &f,
+                      const Merge       &merge)
+    {
+      const unsigned int n_chunks = (n + chunk - 1) / chunk;
+      std::vector<Value> partial(n_chunks, initial);
+      parallel_range(
+        n_chunks,
+        [&](const unsigned int b, const unsigned int e) {
+          for (unsigned int k = b; k < e; ++k)
+            {
+              // In a local, which the compiler can keep in registers.
+              Value value = initial;
+              for (unsigned int a = k * chunk; a < std::min(n, (k + 1) * chunk);
+                   ++a)
+                f(a, value);
+              partial[k] = value;
+            }
+        },
+        1);
+      Value total = initial;
+      for (const Value &p : partial)
+        merge(total, p);
+      return total;
+    }
+
+    /**
      * N compensated sums over the items [0, n), in parallel: f(a, sums)
      * adds item a's terms to sums[0..N-1]. The items are summed in fixed
      * chunks of 512 (small enough to share among threads), in order, and the
@@ -66,28 +103,12 @@ namespace fsgmpm
     std::array<CompensatedSum, N>
     compensated_sums(const unsigned int n, const Function &f)
     {
-      constexpr unsigned int chunk    = 512;
-      const unsigned int     n_chunks = (n + chunk - 1) / chunk;
-      std::vector<std::array<CompensatedSum, N>> partial(n_chunks);
-      parallel_range(
-        n_chunks,
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int k = b; k < e; ++k)
-            {
-              // In a local, which the compiler can keep in registers.
-              std::array<CompensatedSum, N> sums;
-              for (unsigned int a = k * chunk; a < std::min(n, (k + 1) * chunk);
-                   ++a)
-                f(a, sums);
-              partial[k] = sums;
-            }
-        },
-        1);
-      std::array<CompensatedSum, N> sums;
-      for (const auto &p : partial)
-        for (unsigned int q = 0; q < N; ++q)
-          sums[q].add(p[q]);
-      return sums;
+      using Sums = std::array<CompensatedSum, N>;
+      return chunked_reduction(
+        n, 512, Sums(), f, [](Sums &total, const Sums &chunk_sums) {
+          for (unsigned int q = 0; q < N; ++q)
+            total[q].add(chunk_sums[q]);
+        });
     }
 
     /**
@@ -103,27 +124,12 @@ namespace fsgmpm
                     const std::array<double, N> &initial,
                     const Function              &f)
     {
-      constexpr unsigned int             chunk    = 4096;
-      const unsigned int                 n_chunks = (n + chunk - 1) / chunk;
-      std::vector<std::array<double, N>> partial(n_chunks, initial);
-      parallel_range(
-        n_chunks,
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int k = b; k < e; ++k)
-            {
-              std::array<double, N> maxima = initial;
-              for (unsigned int a = k * chunk; a < std::min(n, (k + 1) * chunk);
-                   ++a)
-                f(a, maxima);
-              partial[k] = maxima;
-            }
-        },
-        1);
-      std::array<double, N> maxima = initial;
-      for (const auto &p : partial)
-        for (unsigned int q = 0; q < N; ++q)
-          maxima[q] = std::max(maxima[q], p[q]);
-      return maxima;
+      using Maxima = std::array<double, N>;
+      return chunked_reduction(
+        n, 4096, initial, f, [](Maxima &total, const Maxima &chunk_maxima) {
+          for (unsigned int q = 0; q < N; ++q)
+            total[q] = std::max(total[q], chunk_maxima[q]);
+        });
     }
 
     /**
