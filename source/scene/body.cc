@@ -73,6 +73,21 @@ namespace fsgmpm
           "at most the cell's volume, min(sum_p V_p, V_c), which keeps a "
           "fluid's points from packing in violent flow "
           "(doc/geocontainer_validation.md, Section 6).");
+        prm.declare_entry(
+          "Smoothing stabilisation",
+          "0",
+          Patterns::Double(0, 1),
+          "With NMD or ANP: the share alpha of each cell's own volumetric "
+          "strain rate and of each point's own pressure kept beside the "
+          "nodal averages (0: the paper's averages alone; 1: no smoothing; "
+          "0.5, twice the smallest share that kept a tank of water at rest "
+          "still for 10 s, is the measured choice for still or slow water). "
+          "The averages alone have a null space, patterns of compression "
+          "and expansion that average out at every node, in which the "
+          "points pack without pressure: under gravity they do, and water "
+          "at rest starts to slosh after some 0.5 s; alpha gives those "
+          "patterns the stiffness alpha K (doc/water_validation.md, Still "
+          "water).");
         prm.declare_entry("ANP mapping",
                           "element_mean",
                           Patterns::Selection("element_mean|interpolate"),
@@ -220,6 +235,8 @@ namespace fsgmpm
                              : (smoothing.find("ANP") != std::string::npos);
         body.options.anp_interpolate
           = (prm.get("ANP mapping") == "interpolate");
+        body.options.smoothing_stabilisation
+          = prm.get_double("Smoothing stabilisation");
         body.options.capped_weights
           = (prm.get("Smoothing weights") == "capped cell volume");
         const std::string detect = prm.get("Free surface detection");

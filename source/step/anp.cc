@@ -110,11 +110,16 @@ namespace fsgmpm
                 run_material = m;
               }
             // Eq. (28): deviatoric part kept, spherical part averaged
-            // (sigma <- dev(sigma) - p_bar I, on the diagonal only).
-            SymmetricTensor<2, 3> &s    = particles.stress[p];
-            const double           mean = trace(s) / 3;
+            // (sigma <- dev(sigma) - p_bar I, on the diagonal only); with
+            // the stabilisation a share alpha of the point's own pressure
+            // stays, as NMD keeps the cell's own rate (the stress power
+            // then still equals the nodal forces' power).
+            SymmetricTensor<2, 3> &s     = particles.stress[p];
+            const double           mean  = trace(s) / 3;
+            const double           alpha = options[m].smoothing_stabilisation;
+            const double pressure        = (1. - alpha) * p_bar - alpha * mean;
             for (unsigned int d = 0; d < 3; ++d)
-              s[d][d] = (s[d][d] - mean) - p_bar;
+              s[d][d] = (s[d][d] - mean) - pressure;
           }
       });
     }

@@ -77,6 +77,10 @@ namespace fsgmpm
             for (const unsigned int i : grid.cell_nodes[c])
               smoothed += smoothing.average(m, i);
             smoothed /= (dim + 1);
+            // With the stabilisation, a share alpha of the cell's own rate
+            // stays (MaterialOptions::smoothing_stabilisation).
+            const double alpha = options[m].smoothing_stabilisation;
+            smoothed = (1. - alpha) * smoothed + alpha * trace(kin.strain_rate);
             const double correction = (smoothed - trace(kin.strain_rate)) / dim;
             for (unsigned int d = 0; d < dim; ++d)
               kin.strain_rate[d][d] += correction;

@@ -20,6 +20,19 @@ namespace fsgmpm
      * Section 6: removes most of the water's point compaction).
      */
     bool capped_weights = false;
+    /**
+     * Stabilisation of the nodal averages, 0 <= alpha <= 1: the share of a
+     * cell's own volumetric strain rate kept beside NMD's smoothed one, and
+     * of a point's own pressure beside ANP's average, eps_v = (1 - alpha)
+     * S(eps_v) + alpha eps_v and p = (1 - alpha) S(p) + alpha p with the
+     * same weights, so that the stress power still equals the power of the
+     * nodal forces. The averages S alone have a null space (cell patterns
+     * of compression and expansion that average out at every node) in which
+     * the points can pack without any pressure: under gravity they do, and
+     * still water starts to slosh (doc/water_validation.md, "Still water").
+     * alpha gives those patterns the stiffness alpha K.
+     */
+    double smoothing_stabilisation = 0;
     /// ANP back-mapping: false = element mean (paper), true = interpolate.
     bool   anp_interpolate        = false;
     bool   detect_free_surface    = false; ///< volume-fraction form, Eq. (33)
