@@ -182,17 +182,35 @@ namespace fsgmpm
   }
 
   double
+  NewtonianFluid::volume_ratio_energy(const double J) const
+  {
+    // Without tension p = 0 above J = 1 (and the volume update keeps
+    // J <= 1): no energy there.
+    if (!allow_tension && J >= 1.)
+      return 0.;
+    if (law == PressureLaw::linear)
+      return 0.5 * K * (1. - J) * (1. - J);
+    // int_J^1 (K/kappa)(x^-kappa - 1) dx.
+    const double integral_of_power
+      = std::abs(kappa - 1.) < 1e-12
+          ? -std::log(J)
+          : (1. - std::pow(J, 1. - kappa)) / (1. - kappa);
+    return K / kappa * (integral_of_power - (1. - J));
+  }
+
+  double
   NewtonianFluid::add_strain_energy(const SymmetricTensor<2, 3> *stress,
                                     const double                *volume,
-                                    const unsigned int           n,
-                                    double                       energy) const
+                                    const double      *reference_volume,
+                                    const unsigned int n,
+                                    double             energy) const
   {
     if (!is_this_class())
-      return Material::add_strain_energy(stress, volume, n, energy);
-    // This class's own density, called directly (inlined, no virtual
-    // call per point), in the same order.
+      return Material::add_strain_energy(
+        stress, volume, reference_volume, n, energy);
     for (unsigned int i = 0; i < n; ++i)
-      energy += volume[i] * NewtonianFluid::strain_energy_density(stress[i]);
+      energy += reference_volume[i]
+                * volume_ratio_energy(volume[i] / reference_volume[i]);
     return energy;
   }
 

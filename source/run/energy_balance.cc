@@ -38,6 +38,7 @@ namespace fsgmpm
                 s = materials[particles.material_id[p]]->add_strain_energy(
                   particles.stress.data() + p,
                   particles.volume.data() + p,
+                  particles.reference_volume.data() + p,
                   last - p,
                   s);
                 for (; p < last; ++p)

@@ -7,12 +7,19 @@
 // from nothing; the second test perturbs it: the same column with a
 // two-dimensional velocity perturbation v_y = v0 sin(pi y / H) cos(pi x / W),
 // v0 = 1 mm/s (acoustic pressure rho c v0 = 0.3 rho g H), must keep the
-// perturbation bounded over 3000 steps: the kinetic energy never exceeds
-// 1.02 times the perturbation's (measured 0.9999: it trades with strain
-// energy in the acoustic modes), the energy balance (kinetic + strain -
-// external work) holds within 15% of the perturbation energy (measured
-// 6.8%), the interior pressure error stays below 7% of rho g H during the
-// run (measured 4.9%) and returns below 2% at the end (measured 1.56%).
+// perturbation bounded over 3000 steps. Most of that field is rotational:
+// its gradient (compressive) part holds (1/H^2) / (1/H^2 + 1/W^2) = 2.5 %
+// of its kinetic energy, which trades with strain energy in acoustic modes
+// (period about 14 steps), while the rotational rest has no restoring
+// force in an inviscid fluid and stays. So the kinetic energy never
+// exceeds 1.02 times the perturbation's (measured 0.9999) and never falls
+// below 0.95 of it (measured 0.978: a scheme that locks the rotational
+// flow, as the smoothing stabilisation 0.5 does at 4 cells across, turns
+// up to 85 % of it into strain energy); the energy balance (kinetic +
+// strain - external work, the strain energy that of the points' volume
+// ratios) holds within 5 % of the perturbation energy (measured 2.1 %);
+// the interior pressure error stays below 7 % of rho g H during the run
+// (measured 4.9 %) and returns below 2 % at the end (measured 1.56 %).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
@@ -105,13 +112,14 @@ TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
   const auto  &m0       = sim.get_monitors();
   const double ke0      = m0.kinetic_energy;
   const double balance0 = m0.kinetic_energy + m0.strain_energy;
-  double       max_ke = 0, max_imbalance = 0, max_error_run = 0;
+  double       max_ke = 0, min_ke = ke0, max_imbalance = 0, max_error_run = 0;
   while (sim.advance())
     {
       if (sim.get_step() % 10 == 0)
         max_error_run = std::max(max_error_run, max_pressure_error(ps));
       const auto &m = sim.get_monitors();
       max_ke        = std::max(max_ke, m.kinetic_energy);
+      min_ke        = std::min(min_ke, m.kinetic_energy);
       max_imbalance = std::max(max_imbalance,
                                std::abs(m.kinetic_energy + m.strain_energy
                                         - m.external_work - balance0));
@@ -122,15 +130,16 @@ TEST(RealWaterStiffness, PerturbedColumnStaysBounded)
   const double max_error = max_pressure_error(ps);
   ASSERT_TRUE(std::isfinite(max_error));
   std::cout << "[ measured ] perturbed real-water column: perturbation "
-            << "energy " << ke0
-            << " J/m, max kinetic energy / it = " << max_ke / ke0 << ", final "
+            << "energy " << ke0 << " J/m, kinetic energy / it max "
+            << max_ke / ke0 << ", min " << min_ke / ke0 << ", final "
             << sim.get_monitors().kinetic_energy / ke0
             << ", max |energy balance drift| / it = " << max_imbalance / ke0
             << ", final max pressure error / rho g H = " << 100 * max_error
             << " %, largest during the run " << 100 * max_error_run << " %"
             << std::endl;
   EXPECT_LT(max_ke / ke0, 1.02);
-  EXPECT_LT(max_imbalance / ke0, 0.15);
+  EXPECT_GT(min_ke / ke0, 0.95);
+  EXPECT_LT(max_imbalance / ke0, 0.05);
   EXPECT_LT(max_error, 0.02);
   EXPECT_LT(max_error_run, 0.07);
 }

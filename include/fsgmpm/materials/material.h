@@ -89,17 +89,20 @@ namespace fsgmpm
     virtual double
     strain_energy_density(const SymmetricTensor<2, 3> &stress) const = 0;
 
-    /// @p energy plus sum_i volume[i] strain_energy_density(stress[i]),
-    /// added in the order i = 0, ..., n - 1 (so a run's sum continues the
-    /// caller's with the same bits as a loop over its points): the energies
-    /// call this once per run of points of the material. The default calls
-    /// strain_energy_density() per point; a material whose density is a
-    /// few operations overrides it with a loop of its own.
+    /// @p energy plus the stored energy of n points, added in the order
+    /// i = 0, ..., n - 1 (so a run's sum continues the caller's with the
+    /// same bits as a loop over its points): the energies call this once
+    /// per run of points of the material. The default, for a material whose
+    /// state is its stress, adds volume[i] strain_energy_density(stress[i]);
+    /// a fluid's state is its volume ratio volume[i] / reference_volume[i]
+    /// (the nodal pressure average overwrites the pressure its stress
+    /// holds), and it overrides this.
     virtual double
     add_strain_energy(const SymmetricTensor<2, 3> *stress,
                       const double                *volume,
-                      const unsigned int           n,
-                      double                       energy) const
+                      const double * /*reference_volume*/,
+                      const unsigned int n,
+                      double             energy) const
     {
       for (unsigned int i = 0; i < n; ++i)
         energy += volume[i] * strain_energy_density(stress[i]);

@@ -82,14 +82,28 @@ namespace fsgmpm
     double
     strain_energy_density(const SymmetricTensor<2, 3> &stress) const override;
 
-    /// strain_energy_density()'s arithmetic in a loop, without a call per
-    /// point. A derived class that overrides strain_energy_density() (step-2's
-    /// Bingham mud) gets the base class's call per point instead.
+    /// The stored energy of the fluid's state: V_ref e(J) with
+    /// e(J) = int_J^1 p(J') dJ' (volume_ratio_energy()), J = volume /
+    /// reference_volume, whose rate is minus the pressure times the
+    /// volumetric strain rate that updated J (NMD's smoothed one where it
+    /// is on). It does not read the stress, whose pressure the nodal
+    /// pressure average (ANP) has overwritten with a smoothed one: the
+    /// energy of that smoothed pressure is not the energy the points hold
+    /// (a column's acoustic perturbation drifted 7 %, 66 % with the
+    /// smoothing stabilisation, by that reading; 2 % and 3 % by this one).
+    /// A derived class that overrides strain_energy_density() (step-2's
+    /// Bingham mud) gets the base class's stress-based sum instead.
     double
     add_strain_energy(const SymmetricTensor<2, 3> *stress,
                       const double                *volume,
+                      const double                *reference_volume,
                       const unsigned int           n,
                       double                       energy) const override;
+
+    /// e(J) = int_J^1 p(J') dJ' per unit reference volume, with the tension
+    /// cut-off: K (1 - J)^2 / 2 for the linear law.
+    double
+    volume_ratio_energy(const double J) const;
 
     double
     reference_density() const override
