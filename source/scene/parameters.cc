@@ -64,13 +64,11 @@ namespace fsgmpm
         "nodal forces jump by V_p sigma_p |grad N|. nodal projection: the "
         "points' stresses are projected to the nodes (sum_p N_i V_p sigma_p "
         "over the node's share of the occupied cells' volume) and the force "
-        "is integrated from that linear field at the nodes whose support "
-        "the points fill (double mapping, as DDMP; blended down to the "
-        "points' own stresses at a fill of 90 %), with the work-conjugate "
-        "nodally averaged strain rate in the stress update: continuous as "
-        "points cross edges inside the material, and a homogeneous "
-        "deformation's rate exact next to partly filled cells. Accuracy "
-        "and cost: "
+        "of the cells filled to 3/4 or more is integrated from that linear "
+        "field (double mapping, as DDMP; blended down to the points' own "
+        "force at a fill of 1/2), with the work-conjugate nodally averaged "
+        "strain rate in the stress update: continuous as points cross "
+        "edges inside the material. Accuracy and cost: "
         "doc/accuracy_vs_cost.md.");
       prm.declare_entry(
         "FLIP noise relaxation time",

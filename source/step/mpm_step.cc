@@ -128,9 +128,6 @@ namespace fsgmpm
             partition->update_ghost_nodes(nodes.support_volume,
                                           nodes.active_stamp,
                                           nodes.stamp);
-            partition->update_ghost_nodes(nodes.point_volume,
-                                          nodes.active_stamp,
-                                          nodes.stamp);
           }
       });
     }

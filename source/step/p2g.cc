@@ -19,10 +19,6 @@ namespace fsgmpm
         {
           nodes.use(nodes.volume_stress);
           nodes.use(nodes.support_volume);
-          nodes.use(nodes.point_volume);
-          Assert(grid.node_volume.size() == grid.n_nodes(),
-                 ExcMessage("The nodal stress projection needs the grid's "
-                            "nodal volumes (compute_node_volumes())."));
         }
       for (const unsigned int c : particles.occupied_cells)
         nodes.activate(grid.cell_nodes[c]);
@@ -34,7 +30,7 @@ namespace fsgmpm
         // Eq. (3): F_int,i = sum_p V_p sigma_p grad N_i, constant gradients.
         Tensor<2, dim>          volume_stress;
         Tensor<2, dim>          nodal_volume_stress[dim + 1];
-        double                  nodal_point_volume[dim + 1] = {};
+        double                  points_volume = 0;
         const CellGeometry<dim> geometry
           = CellLoops::geometry(grid, particles, c);
         for (unsigned int p = particles.cell_begin(c);
@@ -65,12 +61,17 @@ namespace fsgmpm
                 Vs[i][j] = V * particles.stress[p][i][j];
             volume_stress += Vs;
             if (project)
-              for (unsigned int k = 0; k < dim + 1; ++k)
-                {
+              {
+                points_volume += V;
+                for (unsigned int k = 0; k < dim + 1; ++k)
                   nodal_volume_stress[k] += lambda[k] * Vs;
-                  nodal_point_volume[k] += lambda[k] * V;
-                }
+              }
           }
+        // With the projection, the points' own part (1 - theta_c) here,
+        // the projected part in the second pass.
+        if (project)
+          volume_stress
+            *= 1. - CellLoops::projection_share(points_volume, geometry.volume);
         const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
@@ -82,7 +83,6 @@ namespace fsgmpm
               {
                 nodes.volume_stress[n] += nodal_volume_stress[k];
                 nodes.support_volume[n] += geometry.volume / (dim + 1);
-                nodes.point_volume[n] += nodal_point_volume[k];
               }
           }
       });
@@ -91,48 +91,20 @@ namespace fsgmpm
         return;
       if (synchronise)
         synchronise();
-      // Second pass: with the nodal shares Theta_k (projection_share())
-      // the points keep w_p = 1 - sum_k N_k(x_p) Theta_k of their own
-      // stresses, and the cell integrates the projected part,
-      // sum_k Theta_k (s_k V_c / (dim + 1) - sum_p N_k(x_p) V_p sigma_p),
-      // s_k = volume_stress_k / support_volume_k, int_c N_k dV =
-      // V_c / (dim + 1), times the constant gradients.
+      // Second pass: theta_c times the cell integral of the projected
+      // volume-stress density sum_j N_j s_j (s_j = volume_stress_j /
+      // support_volume_j), int_c N_j dV = V_c / (dim + 1), times the
+      // constant gradients.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        double share[dim + 1];
-        bool   any = false;
-        for (unsigned int k = 0; k < dim + 1; ++k)
-          {
-            const unsigned int n = grid.cell_nodes[c][k];
-            share[k] = CellLoops::projection_share(nodes.point_volume[n],
-                                                   grid.node_volume[n]);
-            any      = any || share[k] > 0;
-          }
-        if (!any)
+        const double theta = CellLoops::projection_share(grid, particles, c);
+        if (theta == 0)
           return;
+        Tensor<2, dim> cell_stress;
+        for (const unsigned int n : grid.cell_nodes[c])
+          cell_stress += nodes.volume_stress[n] / nodes.support_volume[n];
         const CellGeometry<dim> geometry
           = CellLoops::geometry(grid, particles, c);
-        Tensor<2, dim> cell_stress;
-        for (unsigned int k = 0; k < dim + 1; ++k)
-          if (share[k] > 0)
-            {
-              const unsigned int n = grid.cell_nodes[c][k];
-              cell_stress += (share[k] * geometry.volume / (dim + 1)
-                              / nodes.support_volume[n])
-                             * nodes.volume_stress[n];
-            }
-        for (unsigned int p = particles.cell_begin(c);
-             p < particles.cell_end(c);
-             ++p)
-          {
-            const auto lambda    = geometry.barycentric(particles.position[p]);
-            double     projected = 0;
-            for (unsigned int k = 0; k < dim + 1; ++k)
-              projected += lambda[k] * share[k];
-            const double w = projected * particles.volume[p];
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                cell_stress[i][j] -= w * particles.stress[p][i][j];
-          }
+        cell_stress *= theta * geometry.volume / (dim + 1);
         const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           nodes.internal_force[grid.cell_nodes[c][k]] += cell_stress * grad[k];

@@ -32,28 +32,21 @@ namespace fsgmpm
                              SmoothingFields<dim>      &smoothing,
                              const ParticleStore<dim>  &particles)
     {
-      // The adjoint of p2g's nodal stress projection: the power of its
-      // projected part, sum_c sum_k Theta_k s_k (V_c / (dim + 1)) : L_c,
-      // equals sum_p V_p sigma_p : sum_k N_k(x_p) Theta_k Lbar_k with
-      // Lbar_k = sum_c (V_c / (dim + 1)) L_c / V_k over the occupied cells
-      // (V_k their lumped volume, support_volume), and the points' own part
-      // w_p = 1 - sum_k N_k(x_p) Theta_k with L_c
-      // (Stages::point_velocity_gradient). A homogeneous deformation has
-      // Lbar_k = L_c = L, so every point gets L, whatever the shares.
-      auto &Lbar  = smoothing.nodal_velocity_gradient;
-      auto &Theta = smoothing.nodal_projection_share;
+      // The adjoint of p2g's nodal stress projection: the internal-force
+      // power sum_c grad N_i^c . theta_c int_c sum_j N_j s_j dV . v_i
+      // equals sum_p V_p sigma_p : sum_j N_j(x_p) Lbar_j with
+      // Lbar_j = sum_c theta_c (V_c / (dim + 1)) L_c / V_j over the
+      // occupied cells, and the points' own part (1 - theta_c) with L_c
+      // (Stages::point_velocity_gradient).
+      auto &Lbar = smoothing.nodal_velocity_gradient;
       if (Lbar.size() != grid.n_nodes())
         Lbar.assign(grid.n_nodes(), Tensor<2, dim>());
-      if (Theta.size() != grid.n_nodes())
-        Theta.assign(grid.n_nodes(), 0.);
-      for_each_node(nodes.active_nodes, [&](const unsigned int i) {
-        Lbar[i]  = Tensor<2, dim>();
-        Theta[i] = CellLoops::projection_share(nodes.point_volume[i],
-                                               grid.node_volume[i]);
-      });
+      for_each_node(nodes.active_nodes,
+                    [&](const unsigned int i) { Lbar[i] = Tensor<2, dim>(); });
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         const Tensor<2, dim> share
-          = (CellLoops::cell_volume(grid, particles, c) / (dim + 1))
+          = (CellLoops::projection_share(grid, particles, c)
+             * CellLoops::cell_volume(grid, particles, c) / (dim + 1))
             * smoothing.cell_velocity_gradient(c);
         for (const unsigned int n : grid.cell_nodes[c])
           Lbar[n] += share;

@@ -57,7 +57,6 @@ namespace fsgmpm
       release(contact_volume);
       release(volume_stress);
       release(support_volume);
-      release(point_volume);
       refill(active_stamp, n_nodes);
       release(active_nodes);
       stamp = 0;
@@ -79,7 +78,6 @@ namespace fsgmpm
           {
             volume_stress[i]  = Tensor<2, dim>();
             support_volume[i] = 0.;
-            point_volume[i]   = 0.;
           }
       });
       active_nodes.clear();
@@ -93,8 +91,8 @@ namespace fsgmpm
     }
 
     /// Size an optional field (added_mass, contact_normal and
-    /// contact_volume, volume_stress, support_volume and point_volume: empty
-    /// until their option first writes them), zero, if it is not sized yet.
+    /// contact_volume, volume_stress and support_volume: empty until their
+    /// option first writes them), zero, if it is not sized yet.
     template <typename T>
     void
     use(std::vector<T> &field) const
@@ -117,7 +115,6 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(contact_volume)
              + MemoryConsumption::memory_consumption(volume_stress)
              + MemoryConsumption::memory_consumption(support_volume)
-             + MemoryConsumption::memory_consumption(point_volume)
              + MemoryConsumption::memory_consumption(active_nodes)
              + MemoryConsumption::memory_consumption(active_stamp);
     }
@@ -167,10 +164,6 @@ namespace fsgmpm
     /// Nodal stress projection: sum over the occupied cells c around node i
     /// of V_c / (dim + 1), the node's lumped share of the occupied volume.
     std::vector<double> support_volume;
-    /// Nodal stress projection: sum_p N_i(x_p) V_p, the volume the points
-    /// fill in the node's support; over the grid's lumped volume it gives
-    /// the node's projection share (CellLoops::projection_share()).
-    std::vector<double> point_volume;
 
     std::vector<unsigned int> active_nodes;
     /// active_stamp[i] == stamp: node i is in active_nodes this step.

@@ -236,26 +236,36 @@ namespace fsgmpm
     }
 
     /**
-     * Stress integration = nodal projection: the share Theta_i of node i's
-     * stress that comes from the nodal projection; a point's own stress
-     * keeps the weight w_p = 1 - sum_k N_k(x_p) Theta_k. Theta = 0 where
-     * the points fill at most 90 % of the node's lumped volume
-     * (sum_p N_i(x_p) V_p / sum_c V_c / (dim + 1) over all its cells), 1
-     * where they fill it all, linear between. Any Theta keeps the stress
-     * power equal to the force power and a homogeneous deformation's rate
-     * exact at every point; a uniform stress gives no force inside the
-     * material where the projected nodes' supports are full, and a node
-     * whose support is cut by a free surface or a membrane (cells 70 %
-     * full on a third of it, full cells on the rest, fill 90 %) keeps the
-     * points' own stresses, as it must: projected, its average would miss the
-     * empty part and push the node one layer inside. The fill is smooth in the
-     * points' positions (N is), so a point crossing an edge moves the
-     * shares, hence the forces, continuously.
+     * Stress integration = nodal projection: the share theta_c of cell @p c
+     * whose internal force comes from the nodal projection, the rest from
+     * its own points (Eq. 3). theta = 0 below a fill sum_p V_p / V_c of 1/2,
+     * 1 from 3/4 on, linear between: cells inside the material (a point
+     * crossing an edge there changes the fill by one point's share, 1/16 to
+     * 1/4) are projected, so their forces are continuous; cells at a free
+     * surface or a membrane, whose nodes carry little mass, keep the
+     * points' own forces (projected, such a cell would push its nearly
+     * empty nodes with the stress of the full cells beside it).
      */
     inline double
-    projection_share(const double point_volume, const double node_volume)
+    projection_share(const double points_volume, const double cell_volume)
     {
-      return std::clamp((point_volume / node_volume - 0.9) / 0.1, 0., 1.);
+      const double fill = points_volume / cell_volume;
+      return std::clamp((fill - 0.5) / 0.25, 0., 1.);
+    }
+
+    /// projection_share() of cell @p c from its points' volumes.
+    template <int dim>
+    double
+    projection_share(const BackgroundGrid<dim> &grid,
+                     const ParticleStore<dim>  &particles,
+                     const unsigned int         c)
+    {
+      double volume = 0;
+      for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
+           ++p)
+        volume += particles.volume[p];
+      return projection_share(volume,
+                              CellLoops::cell_volume(grid, particles, c));
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).

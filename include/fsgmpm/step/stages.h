@@ -196,29 +196,25 @@ namespace fsgmpm
                              const ParticleStore<dim>  &particles);
 
     /// With the nodal stress projection, the velocity gradient of a point
-    /// at barycentric coordinates @p lambda in cell @p c: w_p L_c +
-    /// sum_k lambda_k Theta_k Lbar_k, w_p = 1 - sum_k lambda_k Theta_k, the
-    /// shares Theta_k of the nodes (CellLoops::projection_share()). Then
-    /// sum_p V_p sigma_p : L_p is the power of p2g's internal forces
-    /// exactly, and a homogeneous deformation gives every point its rate
-    /// (test stress_integration).
+    /// at barycentric coordinates @p lambda in cell @p c whose projection
+    /// share is @p theta (CellLoops::projection_share): (1 - theta) L_c +
+    /// sum_k lambda_k Lbar_k. Every point takes the nodal part, also in
+    /// cells with theta = 0: their stress enters the nodal projection of
+    /// the projected cells beside them. Then sum_p V_p sigma_p : L_p is the
+    /// power of p2g's internal forces exactly (test stress_integration).
     template <int dim>
     inline Tensor<2, dim>
     point_velocity_gradient(const BackgroundGrid<dim>         &grid,
                             const SmoothingFields<dim>        &smoothing,
                             const unsigned int                 c,
+                            const double                       theta,
                             const std::array<double, dim + 1> &lambda)
     {
-      Tensor<2, dim> nodal;
-      double         projected = 0;
+      Tensor<2, dim> L = (1. - theta) * smoothing.cell_velocity_gradient(c);
       for (unsigned int k = 0; k < dim + 1; ++k)
-        {
-          const unsigned int n = grid.cell_nodes[c][k];
-          const double share = lambda[k] * smoothing.nodal_projection_share[n];
-          projected += share;
-          nodal += share * smoothing.nodal_velocity_gradient[n];
-        }
-      return (1. - projected) * smoothing.cell_velocity_gradient(c) + nodal;
+        L += lambda[k]
+             * smoothing.nodal_velocity_gradient[grid.cell_nodes[c][k]];
+      return L;
     }
 
     /// Stage 5a' (APIC only): the affine velocity C_p of every point is the
