@@ -24,9 +24,9 @@
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
+#include "hydrostatic_error.h"
 #include "test_utilities.h"
 
-#include <limits>
 
 using namespace fsgmpm;
 
@@ -36,23 +36,12 @@ namespace
   // hydrostatic, 3000 steps.
   constexpr double H = 0.5, W = 0.08, rho = 1000, g = 9.81, h = 0.02;
 
-  // Largest |p - rho g (H - y)| / (rho g H) over the points away from the
-  // top and bottom cell rows; NaN if a position or stress is not finite.
+  // test_tools::max_hydrostatic_error() over the points away from the
+  // top and bottom cell rows.
   double
   max_pressure_error(const ParticleStore<2> &ps)
   {
-    double e = 0;
-    for (unsigned int p = 0; p < ps.size(); ++p)
-      {
-        const double y = ps.position[p][1];
-        if (!std::isfinite(y) || !std::isfinite(trace(ps.stress[p])))
-          return std::numeric_limits<double>::quiet_NaN();
-        if (y > h && y < H - h)
-          e = std::max(e,
-                       std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
-                         / (rho * g * H));
-      }
-    return e;
+    return test_tools::max_hydrostatic_error(ps, rho * g, H, h, H - h);
   }
 
   const char *column_scene = R"(

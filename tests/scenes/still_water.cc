@@ -25,9 +25,9 @@
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
+#include "hydrostatic_error.h"
 #include "test_utilities.h"
 
-#include <limits>
 
 using namespace fsgmpm;
 
@@ -67,24 +67,12 @@ end
 )";
   }
 
-  // Largest |p - rho g (H - y)| / (rho g H) over the points between the
-  // bottom row and the surface row; NaN if a position or stress is not
-  // finite.
+  // test_tools::max_hydrostatic_error() over the points between the
+  // bottom row and the surface row.
   double
   max_pressure_error(const ParticleStore<2> &ps)
   {
-    double e = 0;
-    for (unsigned int p = 0; p < ps.size(); ++p)
-      {
-        const double y = ps.position[p][1];
-        if (!std::isfinite(y) || !std::isfinite(trace(ps.stress[p])))
-          return std::numeric_limits<double>::quiet_NaN();
-        if (y > h && y < 17 * h)
-          e = std::max(e,
-                       std::abs(-trace(ps.stress[p]) / 3. - rho * g * (H - y))
-                         / (rho * g * H));
-      }
-    return e;
+    return test_tools::max_hydrostatic_error(ps, rho * g, H, h, 17 * h);
   }
 
   // The largest kinetic energy over the run, relative to the initial
