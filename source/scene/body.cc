@@ -86,7 +86,9 @@ namespace fsgmpm
           "and expansion that average out at every node, in which the "
           "points pack without pressure: under gravity they do, and water "
           "at rest starts to slosh after some 0.5 s; alpha gives those "
-          "patterns the stiffness alpha K (doc/water_validation.md, Still "
+          "patterns the stiffness alpha K, and so stiffens rotational flow "
+          "that spans only a few cells (0.5 turns most of such a flow's "
+          "kinetic energy into compression: doc/water_validation.md, Still "
           "water).");
         prm.declare_entry("ANP mapping",
                           "element_mean",
