@@ -57,6 +57,7 @@ namespace fsgmpm
       settings.use_musl                   = params.use_musl;
       settings.apic_affine_remap          = params.apic_affine_remap;
       settings.flip_noise_relaxation_time = params.flip_noise_relaxation_time;
+      settings.xpic_order                 = params.xpic_order;
       settings.local_damping              = params.local_damping;
       settings.courant                    = params.time_step.courant;
       settings.mass_scaling               = params.mass_scaling;

@@ -240,13 +240,20 @@ def geocontainer_settings():
     add("water_ppc16", **{"Bodies__Body 1__Particles_per_cell": "16"})
     for c in ("0.25", "0.75", "1"):
         add(f"courant{c}", Simulation__Courant_number=c)
-    add("flip_tau0", Simulation__FLIP_noise_relaxation_time="0")
+    # The transfer: the shipped blend toward XPIC(4), toward PIC (the
+    # setting shipped before XPIC) or XPIC(2), pure FLIP, APIC.
+    add("flip_tau0", Simulation__FLIP_noise_relaxation_time="0",
+        Simulation__XPIC_order="1")
     add("flip_tau0.05", Simulation__FLIP_noise_relaxation_time="0.05")
+    add("pic_blend", Simulation__XPIC_order="1")
+    add("xpic2", Simulation__XPIC_order="2")
     add("apic", Simulation__Velocity_transfer="APIC",
-        Simulation__FLIP_noise_relaxation_time="0")
+        Simulation__FLIP_noise_relaxation_time="0",
+        Simulation__XPIC_order="1")
     add("apic_affine_remap",
         Simulation__Velocity_transfer="APIC affine remap",
-        Simulation__FLIP_noise_relaxation_time="0")
+        Simulation__FLIP_noise_relaxation_time="0",
+        Simulation__XPIC_order="1")
     # Membrane elements of 0.9 cells (0.4 by default): the no-slip
     # geotube's zigzag remedy (section 1).
     add("elements0.9", Membrane__Element_size="0.036",

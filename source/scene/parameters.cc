@@ -75,10 +75,21 @@ namespace fsgmpm
         "0",
         Patterns::Double(0),
         "Velocity transfer = FLIP: if > 0, blend each step's FLIP update "
-        "with the fraction beta = 1 - exp(-dt/tau) of PIC's grid velocity, "
-        "so that the sub-cell velocity noise FLIP keeps decays over tau "
-        "seconds whatever the time step (resolved motion is untouched); 0: "
-        "pure FLIP (paper Eq. 19).");
+        "with the fraction beta = 1 - exp(-dt/tau) of the grid's velocity "
+        "(PIC's, or XPIC's: XPIC order), so that the sub-cell velocity noise "
+        "FLIP keeps decays over tau seconds whatever the time step. With PIC "
+        "the resolved motion pays a viscosity of about h^2 / (6 tau), "
+        "thousands of times water's (measured by the viscous_decay test: "
+        "doc/accuracy_vs_cost.md); 0: pure FLIP (paper Eq. 19).");
+      prm.declare_entry(
+        "XPIC order",
+        "1",
+        Patterns::Integer(1, 8),
+        "The velocity FLIP's noise relaxes to (FLIP noise relaxation time > "
+        "0): 1, PIC's grid velocity; m >= 2, XPIC(m)'s (Hammerquist and "
+        "Nairn 2017), which drops the same sub-cell noise but keeps a "
+        "grid-resolved mode to 1 - (1 - a)^m where PIC keeps a, about 1 - "
+        "(kh)^2/6; each order above 1 costs one more pass over the points.");
       prm.declare_entry(
         "Contact friction coefficient",
         "0",
@@ -292,8 +303,16 @@ namespace fsgmpm
                            ? Stages::StressIntegration::nodal_projection
                            : Stages::StressIntegration::points;
     flip_noise_relaxation_time = prm.get_double("FLIP noise relaxation time");
-    contact_friction           = prm.get_double("Contact friction coefficient");
-    contact_volume_fraction    = prm.get_double("Contact volume fraction");
+    xpic_order                 = prm.get_integer("XPIC order");
+    AssertThrow(xpic_order == 1
+                  || (flip_noise_relaxation_time > 0 && !use_apic),
+                ExcMessage("Simulation/XPIC order = "
+                           + std::to_string(xpic_order)
+                           + " sets the velocity FLIP's noise relaxes to: "
+                             "use it with Velocity transfer = FLIP and FLIP "
+                             "noise relaxation time > 0 (or set it to 1)."));
+    contact_friction        = prm.get_double("Contact friction coefficient");
+    contact_volume_fraction = prm.get_double("Contact volume fraction");
     gravity = parse_vector<dim>(prm.get("Gravity"), "Simulation/Gravity");
     AssertThrow(gravity.norm() <= 1e5,
                 ExcMessage("Simulation/Gravity must not exceed 1e5 m/s^2 "

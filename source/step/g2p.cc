@@ -7,11 +7,12 @@ namespace fsgmpm
   {
     template <int dim>
     void
-    g2p(const BackgroundGrid<dim> &grid,
-        const NodalFields<dim>    &nodes,
-        const double               dt,
-        ParticleStore<dim>        &particles,
-        const double               pic_fraction)
+    g2p(const BackgroundGrid<dim>         &grid,
+        const NodalFields<dim>            &nodes,
+        const double                       dt,
+        ParticleStore<dim>                &particles,
+        const double                       pic_fraction,
+        const std::vector<Tensor<1, dim>> *xpic_correction)
     {
       // FLIP (Eq. 19): v_p += dt a(x_p), blended with a PIC fraction beta:
       // v_p = (1 - beta)(v_p + dt a(x_p)) + beta v(x_p), which leaves the
@@ -20,6 +21,9 @@ namespace fsgmpm
       // 2015): the point takes the grid's velocity, v_p = v(x_p), so the
       // sub-cell velocity noise that FLIP keeps on the points is dropped; its
       // affine part C_p is set after the remap (store_affine_velocity).
+      // With XPIC's correction c the blend's target is S (v^L + c): the
+      // grid-resolved motion is kept to 1 - (1 - a)^m instead of a
+      // (xpic_correction()).
       const bool  apic  = particles.has_affine_velocity();
       const bool  blend = !apic && pic_fraction > 0;
       const auto &field = apic ? nodes.velocity : nodes.acceleration;
@@ -31,7 +35,11 @@ namespace fsgmpm
           {
             f[k] = field[grid.cell_nodes[c][k]];
             if (blend)
-              v[k] = nodes.velocity[grid.cell_nodes[c][k]];
+              {
+                v[k] = nodes.velocity[grid.cell_nodes[c][k]];
+                if (xpic_correction != nullptr)
+                  v[k] += (*xpic_correction)[grid.cell_nodes[c][k]];
+              }
           }
         for (unsigned int p = particles.cell_begin(c);
              p < particles.cell_end(c);
@@ -84,12 +92,14 @@ namespace fsgmpm
            const NodalFields<2> &,
            const double,
            ParticleStore<2> &,
-           const double);
+           const double,
+           const std::vector<Tensor<1, 2>> *);
     template void
     g2p<3>(const BackgroundGrid<3> &,
            const NodalFields<3> &,
            const double,
            ParticleStore<3> &,
-           const double);
+           const double,
+           const std::vector<Tensor<1, 3>> *);
   } // namespace Stages
 } // namespace fsgmpm

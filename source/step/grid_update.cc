@@ -15,52 +15,22 @@ namespace fsgmpm
                 const double                     alpha,
                 const double                     dt,
                 NodalFields<dim>                &nodes,
-                const std::vector<std::uint8_t> *counted_nodes,
-                const MPI_Comm                  *communicator)
+                const std::vector<std::uint8_t> *counted_nodes)
     {
       GridUpdateResult r;
-      // The damping work is booked on the nodes that carry a share of the
-      // mass: on a node that a point's corner barely reaches, the velocity,
-      // force / tiny mass, is not the material's, and dt F_damping . v_mid
-      // there is no energy of the points (a grid node of 4e-7 kg under 68 N
-      // in the 3D geotube slab booked -426 J in one step, which tripped the
-      // energy guard; the points' kinetic energy was 34 J).
+      // The damping work is booked at every node as dt F_damping . v_old:
+      // the damping opposes v_old component by component, so each node's
+      // share is a loss, also at a node that a point's corner barely
+      // reaches, where v_mid (force / tiny mass) is not the material's
+      // velocity (a grid node of 4e-7 kg under 68 N in the 3D geotube slab
+      // booked -426 J in one step with v_mid; the points' kinetic energy
+      // was 34 J).
       // Compensated, so that it does not depend on the order of the nodes
       // or on how they are split over processes (it steers the damping).
       // The loops over the nodes run in parallel, their sums in fixed
       // chunks (CellLoops::compensated_sums): the same for any number of
       // threads.
-      const auto &active    = nodes.active_nodes;
-      double      mean_mass = 0;
-      if (alpha > 0)
-        {
-          const auto mass_and_count = CellLoops::compensated_sums<2>(
-            active.size(), [&](const unsigned int a, auto &sums) {
-              const unsigned int i = active[a];
-              if (counted_nodes == nullptr || (*counted_nodes)[i])
-                {
-                  sums[0].add(nodes.mass[i]);
-                  sums[1].add(1.);
-                }
-            });
-          const CompensatedSum &total_mass = mass_and_count[0];
-          double                n_nodes    = mass_and_count[1].value();
-          if (communicator != nullptr)
-            {
-              // One collective for both (the count is exact in a double).
-              const std::vector<double> sums
-                = sum_over_processes({total_mass, CompensatedSum(n_nodes)},
-                                     *communicator);
-              mean_mass = sums[0];
-              n_nodes   = sums[1];
-            }
-          else
-            mean_mass = total_mass.value();
-          if (n_nodes > 0)
-            mean_mass /= n_nodes;
-        }
-      // The energy increments and the Eq. (30) force norms.
-      const double light = 1e-4 * mean_mass;
+      const auto &active = nodes.active_nodes;
       // Mass scaling's fictitious inertia (sized only when it is used).
       const bool scaled = !nodes.added_mass.empty();
       // Nodes with (almost) no mass carry no information; the remap of
@@ -105,8 +75,7 @@ namespace fsgmpm
             return;
           const Tensor<1, dim> v_mid = 0.5 * (v_old + v_new);
           sums[0].add(dt * (external * v_mid));
-          if (m >= light)
-            sums[1].add(-dt * (damping * v_mid));
+          sums[1].add(-dt * (damping * v_old));
 
           Tensor<1, dim> free_unbalanced = unbalanced;
           Tensor<1, dim> free_external   = external;
@@ -128,15 +97,13 @@ namespace fsgmpm
                    const double,
                    const double,
                    NodalFields<2> &,
-                   const std::vector<std::uint8_t> *,
-                   const MPI_Comm *);
+                   const std::vector<std::uint8_t> *);
     template GridUpdateResult
     grid_update<3>(const NodalConstraints<3> &,
                    const Tensor<1, 3> &,
                    const double,
                    const double,
                    NodalFields<3> &,
-                   const std::vector<std::uint8_t> *,
-                   const MPI_Comm *);
+                   const std::vector<std::uint8_t> *);
   } // namespace Stages
 } // namespace fsgmpm

@@ -203,15 +203,13 @@ namespace fsgmpm
     constraints.set_time(new_time);
     {
       TimerOutput::Scope scope(timer, "grid_update");
-      result.grid
-        = Stages::grid_update(constraints,
-                              gravity,
-                              settings.local_damping,
-                              dt,
-                              nodes,
-                              partition ? &partition->counted_nodes() : nullptr,
-                              partition ? &partition->get_communicator()
-                                        : nullptr);
+      result.grid = Stages::grid_update(constraints,
+                                        gravity,
+                                        settings.local_damping,
+                                        dt,
+                                        nodes,
+                                        partition ? &partition->counted_nodes()
+                                                  : nullptr);
       // The contact's dissipation is not booked as damping work: the nodal
       // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
       // guard only objects to energy gained.
@@ -234,9 +232,29 @@ namespace fsgmpm
     }
     {
       TimerOutput::Scope scope(timer, "g2p");
-      const double       tau = settings.flip_noise_relaxation_time;
-      Stages::g2p(
-        grid, nodes, dt, particles, tau > 0 ? -std::expm1(-dt / tau) : 0.);
+      const double       tau  = settings.flip_noise_relaxation_time;
+      const bool         xpic = tau > 0 && settings.xpic_order > 1
+                        && !particles.has_affine_velocity();
+      if (xpic)
+        Stages::xpic_correction<dim>(
+          grid,
+          particles,
+          constraints,
+          nodes,
+          settings.xpic_order,
+          this->xpic,
+          [this](std::vector<Tensor<1, dim>> &values) {
+            if (partition != nullptr)
+              partition->update_ghost_nodes(values,
+                                            nodes.active_stamp,
+                                            nodes.stamp);
+          });
+      Stages::g2p(grid,
+                  nodes,
+                  dt,
+                  particles,
+                  tau > 0 ? -std::expm1(-dt / tau) : 0.,
+                  xpic ? &this->xpic.correction : nullptr);
     }
     if (membrane_coupling)
       {

@@ -64,6 +64,8 @@ expect_error "Gmsh membrane of tetrahedra" "type 4; a membrane surface consists 
 expect_error "Gmsh membrane shorter than the grid" "but the surface spans only z in \[0, 0.16\]" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh" --set "Membrane/Tangential coupling=no-slip" --set "Membrane/Mesh file=$2/meshes/geotube_A5.56_p1.msh" --set "Grid/Extrusion thickness=0.32"
 expect_error "unknown velocity transfer" "Velocity transfer" --set "Simulation/Velocity transfer=PIC"
 expect_error "affine remap with USL" "APIC affine remap.*USL" --set "Simulation/Velocity transfer=APIC affine remap" --set "Simulation/Update scheme=USL"
+expect_error "XPIC order without the noise relaxation" "XPIC order = 4 sets the velocity FLIP.s noise relaxes to" --set "Simulation/XPIC order=4"
+expect_error "XPIC order with APIC" "XPIC order = 2 sets" --set "Simulation/XPIC order=2" --set "Simulation/FLIP noise relaxation time=0.01" --set "Simulation/Velocity transfer=APIC"
 expect_error "body outside the mesh" "Body 0.*outside the background mesh" --set "Bodies/Body 0/Box upper corner=1.5, 0.4"
 expect_error "missing mesh file" "no_such_mesh.msh" --set "Grid/Type=gmsh" --set "Grid/Mesh file=no_such_mesh.msh"
 expect_error "missing prm file" "no_such_file.prm" no_such_file.prm

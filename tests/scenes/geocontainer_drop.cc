@@ -1,26 +1,26 @@
 // Geocontainer drop, coarse (issue 12): prm/geocontainer_polygon.prm and
 // prm/geocontainer_ellipse.prm at 4 cm cells as shipped (weakly
-// compressible water K = 2.13e7 Pa, FLIP noise relaxation 0.01 s, the
+// compressible water K = 2.13e7 Pa, FLIP noise relaxation 0.01 s toward
+// XPIC(4), the
 // water in its own velocity field with frictionless contact on the bag,
 // the nodal stress projection), the first 0.2 s: sand in its membrane,
 // falling into the water. Asserted over every step:
 // - each body's mass is the same as at the start to 1e-12 (relative);
-// - water points inside the membrane: at most 3, none deeper than 5 mm
-//   (measured at most 1 point, 0.04 and 0.9 mm deep: contact acts on grid
-//   nodes, so a point may cross the membrane by a fraction of a cell);
+// - water points inside the membrane: at most 3, none deeper than 8 mm
+//   (measured at most 1 and 2 points, 2.4 and 5.8 mm deep: contact acts on
+//   grid nodes, so a point may cross the membrane by a fraction of a cell;
+//   0.04 and 0.9 mm with the more viscous blend toward PIC);
 // - sand points outside it: at most 2 of 400, none more than 1 mm out
-//   (measured 1 and 1, 0.28 and 0.04 mm out: a point within 6 mm of a
+//   (measured 1 and 1, 0.33 and 0.07 mm out: a point within 6 mm of a
 //   membrane chord crosses it; doc/geocontainer_validation.md);
-// - the sand's area within 3% of its start (measured within 0.26%);
+// - the sand's area within 3% of its start (measured within 0.53%);
 // - the run is stable and loses no point;
 // and that the container accelerates downward: its mass-weighted vertical
 // velocity at 0.05, 0.1 and 0.2 s is negative and growing in magnitude
-// (measured -0.36, -0.54, -0.67 m/s for the polygon, -0.25, -0.38, -0.53
+// (measured -0.38, -0.59, -0.73 m/s for the polygon, -0.27, -0.43, -0.64
 // for the ellipse: the polygon's pointed bottom enters faster, as in the
-// paper's Fig. 15), at 0.2 s within 0.02 m/s of that measurement. 88 s on
-// 2 cores, nothing else running (2026-11-28; 107 s before the container
-// monitor skipped the points off the membrane's bounding box; the scene
-// monitors are evaluated at every step here).
+// paper's Fig. 15), at 0.2 s within 0.02 m/s of that measurement. About
+// 65 s on 2 cores (the scene monitors are evaluated at every step here).
 
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
@@ -107,9 +107,9 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u) << scene;
       EXPECT_LE(max_outside, 2u) << scene;
       EXPECT_LE(max_inside, 3u) << scene;
-      EXPECT_LT(max_depth, 0.005) << scene;
-      // Sand points outside the membrane: measured 0.23 mm (polygon) and
-      // 0.04 mm (ellipse) at most.
+      EXPECT_LT(max_depth, 0.008) << scene;
+      // Sand points outside the membrane: measured 0.33 mm (polygon) and
+      // 0.07 mm (ellipse) at most.
       EXPECT_LT(max_out, 0.001) << scene;
       EXPECT_LT(worst_area, 0.03) << scene;
       ASSERT_EQ(velocity.size(), 3u) << scene;
@@ -117,10 +117,10 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
       for (unsigned int i = 1; i < velocity.size(); ++i)
         EXPECT_LT(velocity[i].second, velocity[i - 1].second)
           << scene << " at t = " << velocity[i].first;
-      // The velocity at 0.2 s against our measurement (-0.673 and -0.525
+      // The velocity at 0.2 s against our measurement (-0.729 and -0.638
       // m/s), so that a change of the result shows.
       EXPECT_NEAR(velocity[2].second,
-                  scene == "geocontainer_polygon.prm" ? -0.673 : -0.525,
+                  scene == "geocontainer_polygon.prm" ? -0.729 : -0.638,
                   0.02)
         << scene;
       std::cout << scene << ": v_y = " << velocity[0].second << ", "
@@ -137,23 +137,24 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
 
 // Validation (label validation, not in the default run): both shipped
 // scenes as shipped (2 cm, 16 and 4 points per cell, nodal stress
-// projection, polygon to 1.7 s, ellipse to 2.1 s), from the water surface
-// to the tank floor. The experiment (paper Section 5.2): 0.8 m/s at 0.8 s,
-// on the floor at 1.1 s. Our scenes sink at 0.377 and 0.395 m/s at 0.8 s
-// and land (the velocity turns upward) at 1.648 and 1.752 s: outside the
-// 25% band, for the reasons measured in doc/geocontainer_validation.md,
-// section 5 (numerical drag falling with the mesh and the FLIP-PIC
-// blending). Asserted against our measurement, so that a change of the
-// result shows: the velocity at 0.8 s within 0.05 m/s, the landing time
-// within 0.05 s, the membrane's lowest node at 1.6 s within 1 cm (measured
-// 1.75 and 5.19 cm), masses to 1e-12, at most 20 water points inside the
-// membrane and none deeper than 15 mm (measured 9 points, 7.5 and 6.5 mm:
-// contact on grid nodes, 2 cm cells), a stable run; and that the water
-// keeps its volume: by the work gravity has done, the water's centre of
-// mass has risen at 0.8 s by the volume the bag displaces, within 1 mm
-// (measured 5.15 against 4.87 mm and 4.65 against 4.36 mm; with the
-// paper's NMD+ANP it fell, doc section 5). About 20 min (polygon) and
-// 35 min (ellipse) on 2 cores.
+// projection, FLIP's noise relaxed toward XPIC(4), polygon to 1.7 s,
+// ellipse to 2.1 s), from the water surface to the tank floor. The
+// experiment (paper Section 5.2): 0.8 m/s at 0.8 s, on the floor at 1.1 s.
+// Our scenes sink at 0.499 and 0.512 m/s at 0.8 s and land (the velocity
+// turns upward) at 1.454 and 1.524 s: outside the 25% band, for the
+// reasons measured in doc/geocontainer_validation.md, section 5. Asserted
+// against our measurement, so that a change of the result shows: the
+// velocity at 0.8 s within 0.05 m/s, the landing time within 0.05 s, the
+// membrane's lowest node at 1.6 s within 1 cm (measured 2.72 and 2.11
+// cm), masses to 1e-12, at most 20 water points inside the membrane and
+// none deeper than 15 mm (measured 9 and 7 points, 9.1 and 9.0
+// mm: contact on grid nodes, 2 cm cells), no point lost, a stable run; and
+// that the water keeps its volume: by the work gravity has done, the
+// water's centre of mass has risen at 0.8 s by at least the volume the bag
+// displaces less 0.5 mm (measured 7.07 against 5.59 mm and 6.41 against 5.09
+// mm; with the paper's NMD+ANP it fell, doc section 5) and by at most 3 mm more
+// (the surface's waves and the jet where the water closes over the bag: 1.5 and
+// 1.3 mm). About 25 min (polygon) and 35 min (ellipse) on 2 cores.
 TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
 {
   struct Expected
@@ -162,8 +163,8 @@ TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
     double      v_08, landing, lowest_16;
   };
   for (const Expected &e :
-       {Expected{"geocontainer_polygon.prm", -0.377, 1.648, 0.0175},
-        Expected{"geocontainer_ellipse.prm", -0.395, 1.752, 0.0519}})
+       {Expected{"geocontainer_polygon.prm", -0.499, 1.454, 0.0272},
+        Expected{"geocontainer_ellipse.prm", -0.512, 1.524, 0.0211}})
     {
       auto prm = test_tools::make_parameters_from_scene(e.scene);
       prm->enter_subsection("Output");
@@ -218,7 +219,9 @@ TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
                 << std::endl;
       EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
         << e.scene << ": " << sim.get_diagnosis();
-      EXPECT_NEAR(water_rise, displaced_rise, 0.001) << e.scene;
+      EXPECT_GT(water_rise, displaced_rise - 0.0005) << e.scene;
+      EXPECT_LT(water_rise, displaced_rise + 0.003) << e.scene;
+      EXPECT_EQ(sim.get_monitors().lost_particles, 0u) << e.scene;
       EXPECT_NEAR(v_08, e.v_08, 0.05) << e.scene;
       EXPECT_NEAR(landing, e.landing, 0.05) << e.scene;
       EXPECT_NEAR(lowest_16, e.lowest_16, 0.01) << e.scene;

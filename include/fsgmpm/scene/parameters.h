@@ -47,6 +47,8 @@ namespace fsgmpm
     Stages::StressIntegration stress_integration;
     /// FLIP-PIC blend: sub-cell noise decays over this time (s; 0: FLIP).
     double flip_noise_relaxation_time;
+    /// The velocity the noise relaxes to: XPIC(m)'s (1: PIC's).
+    unsigned int xpic_order;
     /// Coulomb friction between velocity fields (multi-field contact).
     double contact_friction;
     /// Contact acts where both fields fill this fraction of a node.

@@ -46,6 +46,8 @@ namespace fsgmpm
       bool apic_affine_remap = false;
       /// FLIP noise relaxation time tau (0: pure FLIP/PIC blend of g2p).
       double flip_noise_relaxation_time = 0;
+      /// The velocity the noise relaxes to: XPIC(m)'s (1: PIC's).
+      unsigned int xpic_order = 1;
       /// Local non-viscous damping alpha (dynamic relaxation).
       double local_damping = 0;
       double courant       = 0.5;
@@ -175,6 +177,8 @@ namespace fsgmpm
     template <typename Predicate>
     void
     synchronise_smoothing(const Predicate &uses);
+    /// XPIC's nodal scratch (xpic_order >= 2).
+    Stages::XpicFields<dim> xpic;
     /// Per cell sum_p V_p M_p for the membrane's nodal time-step bound.
     std::vector<double> cell_stiffness;
 

@@ -99,10 +99,9 @@ namespace fsgmpm
     /// F_ext, local non-viscous damping F_damp = -alpha |F_unbal| sign(v),
     /// wall conditions on v^{n+1} = v^n + dt a, and a consistent with them.
     /// With @p counted_nodes (MPI), the result sums only the nodes marked
-    /// 1 there, so that the sums over all processes count each node once,
-    /// and the mean nodal mass that decides which nodes book damping work
-    /// is taken over the processes of @p communicator (MPI; nullptr for
-    /// one process).
+    /// 1 there, so that the sums over all processes count each node once.
+    /// The damping work is booked at every node as dt F_damp . v^n (a loss
+    /// at each node).
     template <int dim>
     GridUpdateResult
     grid_update(const NodalConstraints<dim>     &constraints,
@@ -110,8 +109,7 @@ namespace fsgmpm
                 const double                     damping_alpha,
                 const double                     dt,
                 NodalFields<dim>                &nodes,
-                const std::vector<std::uint8_t> *counted_nodes = nullptr,
-                const MPI_Comm                  *communicator  = nullptr);
+                const std::vector<std::uint8_t> *counted_nodes = nullptr);
 
     /// Multi-field contact, part 1 (once per step, after p2g and
     /// MembraneCoupling::p2g): at every node of field 0 the contact normal,
@@ -143,17 +141,50 @@ namespace fsgmpm
                   const bool                   update_acceleration,
                   NodalFields<dim>            &nodes);
 
-    /// Stage 3 (Eq. 19): FLIP v_p += dt sum_i N_i(x_p) a_i, then blended
-    /// with the fraction @p pic_fraction of PIC's v_p = sum_i N_i(x_p) v_i
-    /// (0: pure FLIP); or, if the points carry an affine velocity, APIC:
-    /// v_p = sum_i N_i(x_p) v_i.
+    /// XPIC(m)'s scratch (xpic_correction()): nodal vectors sized to the
+    /// grid's nodes when first used.
+    template <int dim>
+    struct XpicFields
+    {
+      /// v* - v^n, the correction g2p adds to the grid velocity.
+      std::vector<Tensor<1, dim>> correction;
+      std::vector<Tensor<1, dim>> previous, next;
+      std::vector<double>         point_mass;
+    };
+
+    /// Stage 3a, FLIP's noise relaxation with XPIC(m) (Hammerquist and Nairn
+    /// 2017), @p order m >= 2: after the grid update, the nodal correction
+    /// v* - v^n of the velocity the points relax to, S (v^L - v^n + v*),
+    /// where v* = sum_{k=1}^m (-1)^(k+1) C(m, k) A^(k-1) v^n and A is the
+    /// mass-weighted round trip grid -> points -> grid. PIC (m = 1) damps a
+    /// grid-resolved mode by 1 - a per relaxation (a = A's eigenvalue,
+    /// about 1 - (kh)^2 / 6), XPIC(m) by (1 - a)^m; both drop the sub-cell
+    /// noise. @p synchronise (MPI) refreshes a nodal vector's rim values.
     template <int dim>
     void
-    g2p(const BackgroundGrid<dim> &grid,
-        const NodalFields<dim>    &nodes,
-        const double               dt,
-        ParticleStore<dim>        &particles,
-        const double               pic_fraction = 0);
+    xpic_correction(
+      const BackgroundGrid<dim>                                &grid,
+      const ParticleStore<dim>                                 &particles,
+      const NodalConstraints<dim>                              &constraints,
+      const NodalFields<dim>                                   &nodes,
+      const unsigned int                                        order,
+      XpicFields<dim>                                          &xpic,
+      const std::function<void(std::vector<Tensor<1, dim>> &)> &synchronise
+      = {});
+
+    /// Stage 3 (Eq. 19): FLIP v_p += dt sum_i N_i(x_p) a_i, then blended
+    /// with the fraction @p pic_fraction of PIC's v_p = sum_i N_i(x_p) v_i
+    /// (0: pure FLIP), or of XPIC's sum_i N_i(x_p) (v_i + c_i) with the
+    /// nodal @p xpic_correction c if given; or, if the points carry an
+    /// affine velocity, APIC: v_p = sum_i N_i(x_p) v_i.
+    template <int dim>
+    void
+    g2p(const BackgroundGrid<dim>         &grid,
+        const NodalFields<dim>            &nodes,
+        const double                       dt,
+        ParticleStore<dim>                &particles,
+        const double                       pic_fraction    = 0,
+        const std::vector<Tensor<1, dim>> *xpic_correction = nullptr);
 
     /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
     /// membrane-node) momenta, with the kinematic wall conditions
