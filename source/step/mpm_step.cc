@@ -243,12 +243,13 @@ namespace fsgmpm
           nodes,
           settings.xpic_order,
           this->xpic,
-          [this](std::vector<Tensor<1, dim>> &values) {
-            if (partition != nullptr)
-              partition->update_ghost_nodes(values,
-                                            nodes.active_stamp,
-                                            nodes.stamp);
-          });
+          partition == nullptr
+            ? std::function<void(std::vector<Tensor<1, dim>> &)>()
+            : [this](std::vector<Tensor<1, dim>> &values) {
+                partition->update_ghost_nodes(values,
+                                              nodes.active_stamp,
+                                              nodes.stamp);
+              });
       Stages::g2p(grid,
                   nodes,
                   dt,

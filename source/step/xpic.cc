@@ -48,11 +48,15 @@ namespace fsgmpm
       double sign = -1;
       for (unsigned int k = 2; k <= order; ++k, sign = -sign)
         {
+          // The points' nodal mass sum_p N_i m_p is the same in every
+          // pass: summed in the first.
+          const bool first = (k == 2);
           for_each_node(active, [&](const unsigned int i) {
-            xpic.next[i]       = Tensor<1, dim>();
-            xpic.point_mass[i] = 0;
+            xpic.next[i] = Tensor<1, dim>();
+            if (first)
+              xpic.point_mass[i] = 0;
           });
-          // sum_p N_i m_p (S u)(x_p) and sum_p N_i m_p.
+          // sum_p N_i m_p (S u)(x_p) (and in the first pass sum_p N_i m_p).
           CellLoops::scatter_by_colour(
             grid, particles, [&](const unsigned int c) {
               Tensor<1, dim>          u[dim + 1], mu[dim + 1];
@@ -74,13 +78,15 @@ namespace fsgmpm
                     {
                       const double w = lambda[q] * particles.mass[p];
                       mu[q] += w * value;
-                      mass[q] += w;
+                      if (first)
+                        mass[q] += w;
                     }
                 }
               for (unsigned int q = 0; q < dim + 1; ++q)
                 {
                   xpic.next[grid.cell_nodes[c][q]] += mu[q];
-                  xpic.point_mass[grid.cell_nodes[c][q]] += mass[q];
+                  if (first)
+                    xpic.point_mass[grid.cell_nodes[c][q]] += mass[q];
                 }
             });
           // The term C(m, k) A^(k-1) v^n from the previous one by

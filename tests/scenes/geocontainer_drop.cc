@@ -150,11 +150,11 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
 // none deeper than 15 mm (measured 9 and 7 points, 9.1 and 9.0
 // mm: contact on grid nodes, 2 cm cells), no point lost, a stable run; and
 // that the water keeps its volume: by the work gravity has done, the
-// water's centre of mass has risen at 0.8 s by at least the volume the bag
-// displaces less 0.5 mm (measured 7.07 against 5.59 mm and 6.41 against 5.09
-// mm; with the paper's NMD+ANP it fell, doc section 5) and by at most 3 mm more
-// (the surface's waves and the jet where the water closes over the bag: 1.5 and
-// 1.3 mm). About 25 min (polygon) and 35 min (ellipse) on 2 cores.
+// water's centre of mass has risen at 0.8 s by the volume the bag
+// displaces plus the share of the surface's waves and of the jet where the
+// water closes over the bag, 0.7-2.1 mm (measured 7.07 against 5.59 mm and
+// 6.41 against 5.09 mm; with the paper's NMD+ANP it fell, doc section 5).
+// About 25 min (polygon) and 35 min (ellipse) on 2 cores.
 TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
 {
   struct Expected
@@ -219,8 +219,9 @@ TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
                 << std::endl;
       EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
         << e.scene << ": " << sim.get_diagnosis();
-      EXPECT_GT(water_rise, displaced_rise - 0.0005) << e.scene;
-      EXPECT_LT(water_rise, displaced_rise + 0.003) << e.scene;
+      // Above the displaced volume by the waves' and the jet's share
+      // (measured 1.48 and 1.32 mm).
+      EXPECT_NEAR(water_rise - displaced_rise, 0.0014, 0.0007) << e.scene;
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u) << e.scene;
       EXPECT_NEAR(v_08, e.v_08, 0.05) << e.scene;
       EXPECT_NEAR(landing, e.landing, 0.05) << e.scene;

@@ -73,6 +73,21 @@ namespace
     return w;
   }
 
+  // (S u)(x_p) for point p of cell c: the nodal field u interpolated.
+  template <int dim>
+  Tensor<1, dim>
+  interpolate(const Setup<dim>                             &s,
+              const unsigned int                            c,
+              const unsigned int                            p,
+              const std::map<unsigned int, Tensor<1, dim>> &u)
+  {
+    const auto     w = weights(s, c, p);
+    Tensor<1, dim> Su;
+    for (unsigned int k = 0; k < dim + 1; ++k)
+      Su += w[k] * u.at(s.grid->cell_nodes[c][k]);
+    return Su;
+  }
+
   // (A u)_i, assembled point by point.
   template <int dim>
   std::map<unsigned int, Tensor<1, dim>>
@@ -87,10 +102,8 @@ namespace
            p < s.particles.cell_end(c);
            ++p)
         {
-          const auto     w = weights(s, c, p);
-          Tensor<1, dim> Su;
-          for (unsigned int k = 0; k < dim + 1; ++k)
-            Su += w[k] * u.at(s.grid->cell_nodes[c][k]);
+          const auto           w  = weights(s, c, p);
+          const Tensor<1, dim> Su = interpolate(s, c, p, u);
           for (unsigned int k = 0; k < dim + 1; ++k)
             Au[s.grid->cell_nodes[c][k]] += w[k] * s.particles.mass[p] * Su;
         }
@@ -194,13 +207,7 @@ namespace
       for (unsigned int p = s.particles.cell_begin(c);
            p < s.particles.cell_end(c);
            ++p)
-        {
-          const auto     lambda = weights(s, c, p);
-          Tensor<1, dim> v;
-          for (unsigned int k = 0; k < dim + 1; ++k)
-            v += lambda[k] * w[s.grid->cell_nodes[c][k]];
-          s.particles.velocity[p] = v;
-        }
+        s.particles.velocity[p] = interpolate(s, c, p, w);
     s.nodes.reset_active();
     s.nodes.resize(s.grid->n_nodes());
     Stages::p2g(*s.grid, s.particles, s.nodes);
