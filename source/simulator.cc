@@ -330,7 +330,13 @@ namespace fsgmpm
     particles.sort_by_cell(grid->n_cells());
     if (partition)
       DistributedPoints::add_ghosts(*partition, particles);
-    Stages::p2g(*grid, particles, nodes, params.stress_integration);
+    Stages::p2g(*grid,
+                particles,
+                nodes,
+                params.stress_integration,
+                [this](const unsigned int pass) {
+                  mpm_step->synchronise_projection(pass);
+                });
     if (membrane)
       mpm_step->get_membrane_coupling()->p2g(nodes);
     set_free_surface_fraction(Stages::detect_free_surface(

@@ -52,6 +52,27 @@ namespace fsgmpm
 
 
   template <int dim>
+  void
+  MpmStep<dim>::synchronise_projection(const unsigned int pass)
+  {
+    if (partition == nullptr)
+      return;
+    const auto update = [&](auto &values) {
+      partition->update_ghost_nodes(values, nodes.active_stamp, nodes.stamp);
+    };
+    if (pass == 1)
+      {
+        update(nodes.volume_stress);
+        update(nodes.lumped_volume);
+        update(nodes.occupied_volume);
+      }
+    else
+      update(nodes.support_volume);
+  }
+
+
+
+  template <int dim>
   template <typename Predicate>
   void
   MpmStep<dim>::synchronise_smoothing(const Predicate &uses)
@@ -119,17 +140,13 @@ namespace fsgmpm
       // 3D: the occupied cells' geometry once for the whole step, which
       // starts here (then the time step, the step's stages); in p2g's time.
       particles.cache_cell_geometry(grid);
-      Stages::p2g(grid, particles, nodes, settings.stress_integration, [&]() {
-        if (partition != nullptr)
-          {
-            partition->update_ghost_nodes(nodes.volume_stress,
-                                          nodes.active_stamp,
-                                          nodes.stamp);
-            partition->update_ghost_nodes(nodes.support_volume,
-                                          nodes.active_stamp,
-                                          nodes.stamp);
-          }
-      });
+      Stages::p2g(grid,
+                  particles,
+                  nodes,
+                  settings.stress_integration,
+                  [this](const unsigned int pass) {
+                    synchronise_projection(pass);
+                  });
     }
     if (membrane_coupling)
       {

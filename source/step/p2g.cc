@@ -1,17 +1,19 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <limits>
+
 namespace fsgmpm
 {
   namespace Stages
   {
     template <int dim>
     void
-    p2g(const BackgroundGrid<dim>   &grid,
-        const ParticleStore<dim>    &particles,
-        NodalFields<dim>            &nodes,
-        const StressIntegration      integration,
-        const std::function<void()> &synchronise)
+    p2g(const BackgroundGrid<dim>               &grid,
+        const ParticleStore<dim>                &particles,
+        NodalFields<dim>                        &nodes,
+        const StressIntegration                  integration,
+        const std::function<void(unsigned int)> &synchronise)
     {
       const bool project = (integration == StressIntegration::nodal_projection);
       nodes.reset_active();
@@ -19,6 +21,9 @@ namespace fsgmpm
         {
           nodes.use(nodes.volume_stress);
           nodes.use(nodes.support_volume);
+          nodes.use(nodes.lumped_volume);
+          nodes.use(nodes.occupied_volume);
+          nodes.projection_weights.resize(particles.occupied_cells.size());
         }
       for (const unsigned int c : particles.occupied_cells)
         nodes.activate(grid.cell_nodes[c]);
@@ -28,10 +33,10 @@ namespace fsgmpm
         double         m[dim + 1] = {};
         Tensor<1, dim> mv[dim + 1];
         // Eq. (3): F_int,i = sum_p V_p sigma_p grad N_i, constant gradients.
-        Tensor<2, dim>          volume_stress;
-        Tensor<2, dim>          nodal_volume_stress[dim + 1];
-        double                  points_volume = 0;
-        const CellGeometry<dim> geometry
+        Tensor<2, dim>              volume_stress;
+        Tensor<2, dim>              nodal_volume_stress[dim + 1];
+        std::array<double, dim + 1> lumped{};
+        const CellGeometry<dim>     geometry
           = CellLoops::geometry(grid, particles, c);
         for (unsigned int p = particles.cell_begin(c);
              p < particles.cell_end(c);
@@ -59,53 +64,78 @@ namespace fsgmpm
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
                 Vs[i][j] = V * particles.stress[p][i][j];
-            volume_stress += Vs;
             if (project)
-              {
-                points_volume += V;
-                for (unsigned int k = 0; k < dim + 1; ++k)
+              for (unsigned int k = 0; k < dim + 1; ++k)
+                {
+                  lumped[k] += lambda[k] * V;
                   nodal_volume_stress[k] += lambda[k] * Vs;
-              }
+                }
+            else
+              volume_stress += Vs;
           }
-        // With the projection, the points' own part (1 - theta_c) here,
-        // the projected part in the second pass.
-        if (project)
-          volume_stress
-            *= 1. - CellLoops::projection_share(points_volume, geometry.volume);
         const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int n = grid.cell_nodes[c][k];
             nodes.mass[n] += m[k];
             nodes.momentum[n] += mv[k];
-            nodes.internal_force[n] += volume_stress * grad[k];
             if (project)
               {
                 nodes.volume_stress[n] += nodal_volume_stress[k];
-                nodes.support_volume[n] += geometry.volume / (dim + 1);
+                nodes.lumped_volume[n] += lumped[k];
+                nodes.occupied_volume[n] += geometry.volume / (dim + 1);
               }
+            else
+              nodes.internal_force[n] += volume_stress * grad[k];
           }
+        if (project)
+          nodes.projection_weights[particles.occupied_slot(c)] = lumped;
       });
 
       if (!project)
         return;
       if (synchronise)
-        synchronise();
-      // Second pass: theta_c times the cell integral of the projected
-      // volume-stress density sum_j N_j s_j (s_j = volume_stress_j /
-      // support_volume_j), int_c N_j dV = V_c / (dim + 1), times the
-      // constant gradients.
+        synchronise(1);
+      // Second pass: each cell's quadrature weights q_kc, between its own
+      // (V_c / (dim + 1)) and its points' (sum_p N_k(x_p) V_p) by the fill
+      // of its nodes (CellLoops::geometric_quadrature_share), and their
+      // nodal sums.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        const double theta = CellLoops::projection_share(grid, particles, c);
-        if (theta == 0)
-          return;
-        Tensor<2, dim> cell_stress;
+        double min_fill = std::numeric_limits<double>::max();
         for (const unsigned int n : grid.cell_nodes[c])
-          cell_stress += nodes.volume_stress[n] / nodes.support_volume[n];
-        const CellGeometry<dim> geometry
-          = CellLoops::geometry(grid, particles, c);
-        cell_stress *= theta * geometry.volume / (dim + 1);
-        const auto grad = geometry.shape_gradients();
+          min_fill
+            = std::min(min_fill,
+                       nodes.lumped_volume[n] / nodes.occupied_volume[n]);
+        const double gamma = CellLoops::geometric_quadrature_share(min_fill);
+        const double own
+          = CellLoops::cell_volume(grid, particles, c) / (dim + 1);
+        auto &q = nodes.projection_weights[particles.occupied_slot(c)];
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          {
+            q[k] = gamma * own + (1. - gamma) * q[k];
+            nodes.support_volume[grid.cell_nodes[c][k]] += q[k];
+          }
+      });
+      if (synchronise)
+        synchronise(2);
+      // Third pass: the projected volume-stress density sum_k N_k s_k
+      // (s_k = volume_stress_k / support_volume_k, the q-weighted average
+      // of the points' stresses) integrated with the weights q_kc, times
+      // the constant gradients. A uniform stress is reproduced at every
+      // node, so a cell gets sum_k q_kc sigma: its own volume times sigma
+      // inside, its points' volume times sigma where it is partly filled.
+      CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
+        const auto    &q = nodes.projection_weights[particles.occupied_slot(c)];
+        Tensor<2, dim> cell_stress;
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          {
+            const unsigned int n = grid.cell_nodes[c][k];
+            if (nodes.support_volume[n] > 0)
+              cell_stress
+                += (q[k] / nodes.support_volume[n]) * nodes.volume_stress[n];
+          }
+        const auto grad
+          = CellLoops::geometry(grid, particles, c).shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           nodes.internal_force[grid.cell_nodes[c][k]] += cell_stress * grad[k];
       });
@@ -116,12 +146,12 @@ namespace fsgmpm
            const ParticleStore<2> &,
            NodalFields<2> &,
            StressIntegration,
-           const std::function<void()> &);
+           const std::function<void(unsigned int)> &);
     template void
     p2g<3>(const BackgroundGrid<3> &,
            const ParticleStore<3> &,
            NodalFields<3> &,
            StressIntegration,
-           const std::function<void()> &);
+           const std::function<void(unsigned int)> &);
   } // namespace Stages
 } // namespace fsgmpm

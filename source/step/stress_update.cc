@@ -142,8 +142,7 @@ namespace fsgmpm
           }
 
         // With the projection every point has its own velocity gradient,
-        // from the share p2g used (before any volume changes).
-        const double theta = CellLoops::projection_share(grid, particles, c);
+        // the nodal average of the cells' (nodal_velocity_gradients).
         const CellGeometry<dim> geometry
           = CellLoops::geometry(grid, particles, c);
         thread_local std::vector<PointKinematics> kinematics;
@@ -154,13 +153,8 @@ namespace fsgmpm
           {
             PointKinematics     &kin = kinematics[p - begin];
             const unsigned int   m   = particles.material_id[p];
-            const Tensor<2, dim> L
-              = point_velocity_gradient(grid,
-                                        smoothing,
-                                        c,
-                                        theta,
-                                        geometry.barycentric(
-                                          particles.position[p]));
+            const Tensor<2, dim> L   = point_velocity_gradient(
+              grid, smoothing, c, geometry.barycentric(particles.position[p]));
             run_kinematics(c, m, L, strain_rate_of(L), nullptr, kin);
             kin.volume_ratio
               = update_volume(p, m, std::exp(dt * trace(kin.strain_rate)));

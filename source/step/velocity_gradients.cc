@@ -33,23 +33,20 @@ namespace fsgmpm
                              const ParticleStore<dim>  &particles)
     {
       // The adjoint of p2g's nodal stress projection: the internal-force
-      // power sum_c grad N_i^c . theta_c int_c sum_j N_j s_j dV . v_i
-      // equals sum_p V_p sigma_p : sum_j N_j(x_p) Lbar_j with
-      // Lbar_j = sum_c theta_c (V_c / (dim + 1)) L_c / V_j over the
-      // occupied cells, and the points' own part (1 - theta_c) with L_c
-      // (Stages::point_velocity_gradient).
+      // power sum_c grad N_i^c . sum_k q_kc s_k . v_i, with s_k =
+      // sum_p N_k(x_p) V_p sigma_p / Q_k and Q_k = sum_c q_kc, equals
+      // sum_p V_p sigma_p : sum_k N_k(x_p) Lbar_k with Lbar_k = sum_c q_kc
+      // L_c / Q_k (Stages::point_velocity_gradient).
       auto &Lbar = smoothing.nodal_velocity_gradient;
       if (Lbar.size() != grid.n_nodes())
         Lbar.assign(grid.n_nodes(), Tensor<2, dim>());
       for_each_node(nodes.active_nodes,
                     [&](const unsigned int i) { Lbar[i] = Tensor<2, dim>(); });
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
-        const Tensor<2, dim> share
-          = (CellLoops::projection_share(grid, particles, c)
-             * CellLoops::cell_volume(grid, particles, c) / (dim + 1))
-            * smoothing.cell_velocity_gradient(c);
-        for (const unsigned int n : grid.cell_nodes[c])
-          Lbar[n] += share;
+        const auto &q = nodes.projection_weights[particles.occupied_slot(c)];
+        const Tensor<2, dim> &L = smoothing.cell_velocity_gradient(c);
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          Lbar[grid.cell_nodes[c][k]] += q[k] * L;
       });
       CellLoops::parallel_range(nodes.active_nodes.size(),
                                 [&](const unsigned int b,

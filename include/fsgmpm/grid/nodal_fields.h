@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -57,6 +58,9 @@ namespace fsgmpm
       release(contact_volume);
       release(volume_stress);
       release(support_volume);
+      release(lumped_volume);
+      release(occupied_volume);
+      release(projection_weights);
       refill(active_stamp, n_nodes);
       release(active_nodes);
       stamp = 0;
@@ -76,8 +80,10 @@ namespace fsgmpm
           added_mass[i] = SymmetricTensor<2, dim>();
         if (!volume_stress.empty())
           {
-            volume_stress[i]  = Tensor<2, dim>();
-            support_volume[i] = 0.;
+            volume_stress[i]   = Tensor<2, dim>();
+            support_volume[i]  = 0.;
+            lumped_volume[i]   = 0.;
+            occupied_volume[i] = 0.;
           }
       });
       active_nodes.clear();
@@ -115,6 +121,9 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(contact_volume)
              + MemoryConsumption::memory_consumption(volume_stress)
              + MemoryConsumption::memory_consumption(support_volume)
+             + MemoryConsumption::memory_consumption(lumped_volume)
+             + MemoryConsumption::memory_consumption(occupied_volume)
+             + MemoryConsumption::memory_consumption(projection_weights)
              + MemoryConsumption::memory_consumption(active_nodes)
              + MemoryConsumption::memory_consumption(active_stamp);
     }
@@ -162,8 +171,21 @@ namespace fsgmpm
     /// empty without): sum_p N_i(x_p) V_p sigma_p, the in-plane part.
     std::vector<Tensor<2, dim>> volume_stress;
     /// Nodal stress projection: sum over the occupied cells c around node i
-    /// of V_c / (dim + 1), the node's lumped share of the occupied volume.
+    /// of the cell's quadrature weight q_ic (projection_weights): the volume
+    /// that s_i = volume_stress_i / support_volume_i is the average over.
     std::vector<double> support_volume;
+    /// Nodal stress projection: sum_p N_i(x_p) V_p, the points' volume
+    /// lumped to node i.
+    std::vector<double> lumped_volume;
+    /// Nodal stress projection: sum over the occupied cells c around node i
+    /// of V_c / (dim + 1); lumped_volume / occupied_volume is the node's
+    /// fill.
+    std::vector<double> occupied_volume;
+    /// Nodal stress projection, per occupied cell (in the order of the
+    /// points' occupied_cells, ParticleStore::occupied_slot()): the weight
+    /// q_kc of each of its nodes in the cell's quadrature of the projected
+    /// stress (Stages::p2g).
+    std::vector<std::array<double, dim + 1>> projection_weights;
 
     std::vector<unsigned int> active_nodes;
     /// active_stamp[i] == stamp: node i is in active_nodes this step.

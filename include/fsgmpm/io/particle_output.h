@@ -43,9 +43,9 @@ namespace fsgmpm
     /// of its dim normal components (in 2D the in-plane mean, as the grid
     /// sees no sigma_zz; for a fluid it is the pressure). With the nodal
     /// stress projection, s_j = volume_stress_j / support_volume_j
-    /// interpolated to the point, what the grid integrates in cells filled
-    /// to 3/4 or more (CellLoops::projection_share; the points' own
-    /// pressures carry a sub-cell pattern the projection does not see);
+    /// interpolated to the point, what the grid integrates (the points'
+    /// own pressures carry a sub-cell pattern the projection does not
+    /// see);
     /// with the points' own stresses (Eq. 3), the point's.
     static NodalPointFields
     nodal_point_fields(const BackgroundGrid<dim> &grid,

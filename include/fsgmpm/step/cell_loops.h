@@ -236,36 +236,24 @@ namespace fsgmpm
     }
 
     /**
-     * Stress integration = nodal projection: the share theta_c of cell @p c
-     * whose internal force comes from the nodal projection, the rest from
-     * its own points (Eq. 3). theta = 0 below a fill sum_p V_p / V_c of 1/2,
-     * 1 from 3/4 on, linear between: cells inside the material (a point
-     * crossing an edge there changes the fill by one point's share, 1/16 to
-     * 1/4) are projected, so their forces are continuous; cells at a free
-     * surface or a membrane, whose nodes carry little mass, keep the
-     * points' own forces (projected, such a cell would push its nearly
-     * empty nodes with the stress of the full cells beside it).
+     * Stress integration = nodal projection: the share gamma_c of cell @p c
+     * whose quadrature of the projected stress is the cell's own, V_c /
+     * (dim + 1) per node, the rest its points', sum_p N_k(x_p) V_p, from the
+     * smallest fill of its nodes, @p min_node_fill (a node's fill is
+     * sum_p N_k(x_p) V_p over the occupied cells' V_c / (dim + 1) around
+     * it). 0 up to a fill of 3/4, 1 from 0.9 on, linear between. Inside the
+     * material the cell's own weights keep the forces smooth as points
+     * cross edges (the nodal fill is continuous in the points' positions,
+     * and 0.9 leaves room for the fill's fluctuations there); in a cell
+     * partly filled at a free surface, a membrane or a body in another
+     * velocity field the points' weights integrate only where there is
+     * material, so a uniform stress gives Eq. (3)'s forces exactly and a
+     * nearly empty node is pushed only by what its points fill.
      */
     inline double
-    projection_share(const double points_volume, const double cell_volume)
+    geometric_quadrature_share(const double min_node_fill)
     {
-      const double fill = points_volume / cell_volume;
-      return std::clamp((fill - 0.5) / 0.25, 0., 1.);
-    }
-
-    /// projection_share() of cell @p c from its points' volumes.
-    template <int dim>
-    double
-    projection_share(const BackgroundGrid<dim> &grid,
-                     const ParticleStore<dim>  &particles,
-                     const unsigned int         c)
-    {
-      double volume = 0;
-      for (unsigned int p = particles.cell_begin(c); p < particles.cell_end(c);
-           ++p)
-        volume += particles.volume[p];
-      return projection_share(volume,
-                              CellLoops::cell_volume(grid, particles, c));
+      return std::clamp((min_node_fill - 0.75) / 0.15, 0., 1.);
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).

@@ -109,6 +109,13 @@ namespace fsgmpm
     void
     synchronise_free_surface();
 
+    /**
+     * MPI: refresh the rim values of the nodal stress projection after
+     * Stages::p2g's pass @p pass (its synchronise hook); nothing in serial.
+     */
+    void
+    synchronise_projection(const unsigned int pass);
+
     /// The coupling of the attached membrane (its transfer weights; for a
     /// checkpoint, or to run its stages in a program's own order); null
     /// without a membrane.

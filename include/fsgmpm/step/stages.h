@@ -47,14 +47,16 @@ namespace fsgmpm
     /// nodes of occupied cells become the active nodes. With APIC the
     /// momentum carries the affine part: m_p (v_p + C_p (x_i - x_p)).
     /// With the nodal projection, @p synchronise (MPI: the rim nodes'
-    /// projected stress) runs between the projection and its integration.
+    /// values) runs after the points' sums (pass 1: volume_stress,
+    /// lumped_volume, occupied_volume) and after the quadrature weights'
+    /// sums (pass 2: support_volume), before the integration.
     template <int dim>
     void
-    p2g(const BackgroundGrid<dim>   &grid,
-        const ParticleStore<dim>    &particles,
-        NodalFields<dim>            &nodes,
-        const StressIntegration      integration = StressIntegration::points,
-        const std::function<void()> &synchronise = {});
+    p2g(const BackgroundGrid<dim> &grid,
+        const ParticleStore<dim>  &particles,
+        NodalFields<dim>          &nodes,
+        const StressIntegration    integration = StressIntegration::points,
+        const std::function<void(unsigned int)> &synchronise = {});
 
     /// The stress field that p2g's nodal projection integrates, at the
     /// point of barycentric coordinates @p lambda in cell @p c:
@@ -215,10 +217,10 @@ namespace fsgmpm
 
     /// Stage 5a (Stress integration = nodal projection only): the nodal
     /// average of the cells' velocity gradients with the weights of p2g's
-    /// projection, sum_c (V_c / (dim + 1)) L_c / V_j over the occupied
-    /// cells (NodalFields::support_volume): the strain rate that is
-    /// work-conjugate to the projected internal force, so the stress power
-    /// of the points equals the power of the nodal forces.
+    /// projection, Lbar_j = sum_c q_jc L_c / sum_c q_jc over the occupied
+    /// cells (NodalFields::projection_weights, support_volume): the strain
+    /// rate that is work-conjugate to the projected internal force, so the
+    /// stress power of the points equals the power of the nodal forces.
     template <int dim>
     void
     nodal_velocity_gradients(const BackgroundGrid<dim> &grid,
@@ -227,21 +229,19 @@ namespace fsgmpm
                              const ParticleStore<dim>  &particles);
 
     /// With the nodal stress projection, the velocity gradient of a point
-    /// at barycentric coordinates @p lambda in cell @p c whose projection
-    /// share is @p theta (CellLoops::projection_share): (1 - theta) L_c +
-    /// sum_k lambda_k Lbar_k. Every point takes the nodal part, also in
-    /// cells with theta = 0: their stress enters the nodal projection of
-    /// the projected cells beside them. Then sum_p V_p sigma_p : L_p is the
-    /// power of p2g's internal forces exactly (test stress_integration).
+    /// at barycentric coordinates @p lambda in cell @p c: sum_k lambda_k
+    /// Lbar_k, which is L at every point where the nodal velocities are
+    /// v = L x (a weighted average of the cells' L at each node). Then
+    /// sum_p V_p sigma_p : L_p is the power of p2g's internal forces exactly
+    /// (test stress_integration).
     template <int dim>
     inline Tensor<2, dim>
     point_velocity_gradient(const BackgroundGrid<dim>         &grid,
                             const SmoothingFields<dim>        &smoothing,
                             const unsigned int                 c,
-                            const double                       theta,
                             const std::array<double, dim + 1> &lambda)
     {
-      Tensor<2, dim> L = (1. - theta) * smoothing.cell_velocity_gradient(c);
+      Tensor<2, dim> L;
       for (unsigned int k = 0; k < dim + 1; ++k)
         L += lambda[k]
              * smoothing.nodal_velocity_gradient[grid.cell_nodes[c][k]];
