@@ -325,11 +325,8 @@ namespace fsgmpm
 
   template <int dim>
   void
-  Simulator<dim>::reinitialize_state()
+  Simulator<dim>::rebuild_nodal_fields()
   {
-    particles.sort_by_cell(grid->n_cells());
-    if (partition)
-      DistributedPoints::add_ghosts(*partition, particles);
     Stages::p2g(*grid,
                 particles,
                 nodes,
@@ -339,6 +336,18 @@ namespace fsgmpm
                 });
     if (membrane)
       mpm_step->get_membrane_coupling()->p2g(nodes);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::reinitialize_state()
+  {
+    particles.sort_by_cell(grid->n_cells());
+    if (partition)
+      DistributedPoints::add_ghosts(*partition, particles);
+    rebuild_nodal_fields();
     set_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles, [this]() {
         mpm_step->synchronise_free_surface();

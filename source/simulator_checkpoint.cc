@@ -349,15 +349,7 @@ namespace fsgmpm
       }
     // The nodal fields of the first step after the restart are rebuilt
     // from the points, as every step rebuilds them.
-    Stages::p2g(*grid,
-                particles,
-                nodes,
-                params.stress_integration,
-                [this](const unsigned int pass) {
-                  mpm_step->synchronise_projection(pass);
-                });
-    if (membrane)
-      mpm_step->get_membrane_coupling()->p2g(nodes);
+    rebuild_nodal_fields();
     if (partition)
       DistributedPoints::drop_ghosts(particles);
   }

@@ -228,6 +228,11 @@ namespace fsgmpm
     }
 
   private:
+    /// The nodal fields rebuilt from the points (with the ghost points
+    /// present, MPI), as the first stage of a step builds them: Stages::p2g
+    /// with the projection's halo updates, then the membrane's share.
+    void
+    rebuild_nodal_fields();
     /// The membrane, its cells located on the whole grid; the mesh's cell
     /// size and z range given (a window may not have the grid yet).
     void
