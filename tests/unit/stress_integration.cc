@@ -83,7 +83,9 @@ namespace
         return q;
       },
       tria);
-    return std::make_unique<BackgroundGrid<dim>>(std::move(tria));
+    auto grid = std::make_unique<BackgroundGrid<dim>>(std::move(tria));
+    grid->compute_node_volumes();
+    return grid;
   }
 
   // dim + 1 points per cell at barycentric (beta at vertex k, the rest
