@@ -162,11 +162,9 @@ namespace fsgmpm
           n_fields = std::max(n_fields, body.velocity_field + 1);
         if (n_fields > 1)
           grid->set_velocity_fields(n_fields);
-        // The nodal volumes: read by the contact, APIC's affine remap and
-        // the nodal stress projection.
-        if (n_fields > 1 || params.apic_affine_remap
-            || params.stress_integration
-                 == Stages::StressIntegration::nodal_projection)
+        // The nodal volumes: read only by the contact and APIC's affine
+        // remap.
+        if (n_fields > 1 || params.apic_affine_remap)
           grid->compute_node_volumes();
 
         // Every boundary id named in the wall conditions must exist.

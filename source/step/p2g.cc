@@ -96,41 +96,16 @@ namespace fsgmpm
         return;
       if (synchronise)
         synchronise(1);
-      // The material fill of every active node: the points of all fields
-      // at its base node over the grid's nodal volume (in a fixed order of
-      // the fields, so that it does not depend on the threads).
-      AssertThrow(grid.node_volume.size() == grid.n_nodes(),
-                  ExcMessage("The nodal stress projection reads the grid's "
-                             "nodal volumes: call "
-                             "BackgroundGrid::compute_node_volumes() once "
-                             "before the first step."));
-      nodes.use(nodes.material_fill);
-      CellLoops::parallel_range(
-        nodes.active_nodes.size(),
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int a = b; a < e; ++a)
-            {
-              const unsigned int i    = nodes.active_nodes[a];
-              const unsigned int base = grid.base_node(i);
-              double             v    = 0;
-              for (unsigned int f = 0; f < grid.n_velocity_fields(); ++f)
-                v += nodes.lumped_volume[base + f * grid.n_base_nodes()];
-              nodes.material_fill[i] = v / grid.node_volume[i];
-            }
-        });
       // Second pass: each cell's quadrature weights q_kc, between its own
       // (V_c / (dim + 1)) and its points' (sum_p N_k(x_p) V_p) by the fill
-      // of its nodes (CellLoops::geometric_quadrature_share: the smaller of
-      // the field's own fill and the material fill, so the cell's own
-      // weights are used only where every node has Theta = 1), and their
+      // of its nodes (CellLoops::geometric_quadrature_share), and their
       // nodal sums.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         double min_fill = std::numeric_limits<double>::max();
         for (const unsigned int n : grid.cell_nodes[c])
           min_fill
-            = std::min({min_fill,
-                        nodes.lumped_volume[n] / nodes.occupied_volume[n],
-                        nodes.material_fill[n]});
+            = std::min(min_fill,
+                       nodes.lumped_volume[n] / nodes.occupied_volume[n]);
         const double gamma = CellLoops::geometric_quadrature_share(min_fill);
         const double own
           = CellLoops::cell_volume(grid, particles, c) / (dim + 1);
@@ -143,45 +118,24 @@ namespace fsgmpm
       });
       if (synchronise)
         synchronise(2);
-      // Third pass: the projected volume-stress density sum_k Theta_k N_k
-      // s_k (s_k = volume_stress_k / support_volume_k, the q-weighted
-      // average of the points' stresses, Theta_k the node's share,
-      // CellLoops::projection_share) integrated with the weights q_kc, plus
-      // each point's own share w_p = 1 - sum_k N_k(x_p) Theta_k of V_p
-      // sigma_p, times the constant gradients. Under a uniform stress a
-      // cell gets sum_k q_kc sigma: its own volume times sigma inside, its
-      // points' volume times sigma where it is partly filled.
+      // Third pass: the projected volume-stress density sum_k N_k s_k
+      // (s_k = volume_stress_k / support_volume_k, the q-weighted average
+      // of the points' stresses) integrated with the weights q_kc, times
+      // the constant gradients. A uniform stress is reproduced at every
+      // node, so a cell gets sum_k q_kc sigma: its own volume times sigma
+      // inside, its points' volume times sigma where it is partly filled.
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
         const auto    &q = nodes.projection_weights[particles.occupied_slot(c)];
         Tensor<2, dim> cell_stress;
-        std::array<double, dim + 1> share;
-        bool                        points_share = false;
         for (unsigned int k = 0; k < dim + 1; ++k)
           {
             const unsigned int n = grid.cell_nodes[c][k];
-            share[k] = CellLoops::projection_share(nodes.material_fill[n]);
-            points_share |= (share[k] < 1.);
-            if (nodes.support_volume[n] > 0 && share[k] > 0)
-              cell_stress += (share[k] * q[k] / nodes.support_volume[n])
-                             * nodes.volume_stress[n];
+            if (nodes.support_volume[n] > 0)
+              cell_stress
+                += (q[k] / nodes.support_volume[n]) * nodes.volume_stress[n];
           }
-        const CellGeometry<dim> geometry
-          = CellLoops::geometry(grid, particles, c);
-        if (points_share)
-          for (unsigned int p = particles.cell_begin(c);
-               p < particles.cell_end(c);
-               ++p)
-            {
-              const auto lambda = geometry.barycentric(particles.position[p]);
-              double     w      = 1.;
-              for (unsigned int k = 0; k < dim + 1; ++k)
-                w -= lambda[k] * share[k];
-              const double wV = w * particles.volume[p];
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  cell_stress[i][j] += wV * particles.stress[p][i][j];
-            }
-        const auto grad = geometry.shape_gradients();
+        const auto grad
+          = CellLoops::geometry(grid, particles, c).shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
           nodes.internal_force[grid.cell_nodes[c][k]] += cell_stress * grad[k];
       });

@@ -33,18 +33,13 @@ namespace fsgmpm
                              const ParticleStore<dim>  &particles)
     {
       // The adjoint of p2g's nodal stress projection: the internal-force
-      // power sum_c grad N_i^c . (sum_k Theta_k q_kc s_k + sum_p w_p V_p
-      // sigma_p) . v_i, with s_k = sum_p N_k(x_p) V_p sigma_p / Q_k, Q_k =
-      // sum_c q_kc and w_p = 1 - sum_k N_k(x_p) Theta_k, equals sum_p V_p
-      // sigma_p : (sum_k N_k(x_p) Theta_k Lbar_k + w_p L_c) with Lbar_k =
-      // sum_c q_kc L_c / Q_k (Stages::point_velocity_gradient). Stored:
-      // Theta_k Lbar_k and Theta_k.
-      auto &Lbar  = smoothing.nodal_velocity_gradient;
-      auto &share = smoothing.nodal_projection_share;
+      // power sum_c grad N_i^c . sum_k q_kc s_k . v_i, with s_k =
+      // sum_p N_k(x_p) V_p sigma_p / Q_k and Q_k = sum_c q_kc, equals
+      // sum_p V_p sigma_p : sum_k N_k(x_p) Lbar_k with Lbar_k = sum_c q_kc
+      // L_c / Q_k (Stages::point_velocity_gradient).
+      auto &Lbar = smoothing.nodal_velocity_gradient;
       if (Lbar.size() != grid.n_nodes())
         Lbar.assign(grid.n_nodes(), Tensor<2, dim>());
-      if (share.size() != grid.n_nodes())
-        share.assign(grid.n_nodes(), 0.);
       for_each_node(nodes.active_nodes,
                     [&](const unsigned int i) { Lbar[i] = Tensor<2, dim>(); });
       CellLoops::scatter_by_colour(grid, particles, [&](const unsigned int c) {
@@ -53,18 +48,17 @@ namespace fsgmpm
         for (unsigned int k = 0; k < dim + 1; ++k)
           Lbar[grid.cell_nodes[c][k]] += q[k] * L;
       });
-      CellLoops::parallel_range(
-        nodes.active_nodes.size(),
-        [&](const unsigned int b, const unsigned int e) {
-          for (unsigned int a = b; a < e; ++a)
-            {
-              const unsigned int i = nodes.active_nodes[a];
-              if (nodes.support_volume[i] > 0)
-                Lbar[i] /= nodes.support_volume[i];
-              share[i] = CellLoops::projection_share(nodes.material_fill[i]);
-              Lbar[i] *= share[i];
-            }
-        });
+      CellLoops::parallel_range(nodes.active_nodes.size(),
+                                [&](const unsigned int b,
+                                    const unsigned int e) {
+                                  for (unsigned int a = b; a < e; ++a)
+                                    {
+                                      const unsigned int i
+                                        = nodes.active_nodes[a];
+                                      if (nodes.support_volume[i] > 0)
+                                        Lbar[i] /= nodes.support_volume[i];
+                                    }
+                                });
     }
 
     template void

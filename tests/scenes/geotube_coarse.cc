@@ -235,15 +235,12 @@ TEST(GeotubeCoarse, Slab3DMatchesAnalytic)
 // cables that the grid cannot see) and the nodal stress projection (without
 // it the P1 fill locks volumetrically and holds the initial ellipse; NMD
 // unlocks it but drains the area). The relaxation takes about 25 s (3 s with
-// slip); averaged over 40-50 s. Measured: H/W +0.0006 (own area and length)
-// and -0.0032 (nominal), T +0.0% and -2.0%, max/mean tension - 1 = 0.86 (a
-// local zigzag at one edge of the ground contact), p_top +0.3% and p_bottom
-// -0.2% of p_bottom, 14.9 of 7 026 points outside the membrane (the leak
-// that the nominal errors read: with every node projected, before the
-// nodes' shares, 47.8 outside, -0.0161 and -8.8% nominal; with the cell
-// shares before that, -0.0016 and -0.6%). Asserted: H/W within 0.002 and
-// 0.005, T within 1% and 2.5%, pressures within 1%, max/mean - 1 below
-// 1.6, at most 0.5% of the points outside.
+// slip); averaged over 40-50 s. Measured: H/W +0.0009 (own area and length)
+// and -0.0016 (nominal), T +0.7% and -0.6%, max/mean tension - 1 = 1.14 (a
+// local zigzag at one edge of the ground contact; elsewhere uniform to
+// 1 kN/m), p_top +0.8% and p_bottom +0.0% of p_bottom. Asserted: H/W within
+// 0.003 and 0.005, T within 2% and 2%, pressures within 3%, max/mean - 1
+// below 1.6.
 TEST(GeotubeCoarseValidation, NoSlipMatchesAnalytic)
 {
   auto prm = coarse_parameters(50.0);
@@ -255,7 +252,7 @@ TEST(GeotubeCoarseValidation, NoSlipMatchesAnalytic)
   check_coarse_geotube<2>(*prm,
                           40.0,
                           "no-slip 16 cm",
-                          {0.002, 0.005, 0.01, 0.025, 0.01, 1.6});
+                          {0.003, 0.005, 0.02, 0.02, 0.03, 1.6});
 }
 
 // Quadratic membrane elements with the slip (MembraneSlip::

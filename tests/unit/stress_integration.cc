@@ -83,9 +83,7 @@ namespace
         return q;
       },
       tria);
-    auto grid = std::make_unique<BackgroundGrid<dim>>(std::move(tria));
-    grid->compute_node_volumes();
-    return grid;
+    return std::make_unique<BackgroundGrid<dim>>(std::move(tria));
   }
 
   // dim + 1 points per cell at barycentric (beta at vertex k, the rest

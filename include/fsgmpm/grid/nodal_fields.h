@@ -60,7 +60,6 @@ namespace fsgmpm
       release(support_volume);
       release(lumped_volume);
       release(occupied_volume);
-      release(material_fill);
       release(projection_weights);
       refill(active_stamp, n_nodes);
       release(active_nodes);
@@ -124,7 +123,6 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(support_volume)
              + MemoryConsumption::memory_consumption(lumped_volume)
              + MemoryConsumption::memory_consumption(occupied_volume)
-             + MemoryConsumption::memory_consumption(material_fill)
              + MemoryConsumption::memory_consumption(projection_weights)
              + MemoryConsumption::memory_consumption(active_nodes)
              + MemoryConsumption::memory_consumption(active_stamp);
@@ -183,11 +181,6 @@ namespace fsgmpm
     /// of V_c / (dim + 1); lumped_volume / occupied_volume is the node's
     /// fill.
     std::vector<double> occupied_volume;
-    /// Nodal stress projection: at every active node, the points' volume
-    /// of all velocity fields lumped to its base node over the grid's nodal
-    /// volume (BackgroundGrid::node_volume), which sets the node's share in
-    /// the projection (CellLoops::projection_share).
-    std::vector<double> material_fill;
     /// Nodal stress projection, per occupied cell (in the order of the
     /// points' occupied_cells, ParticleStore::occupied_slot()): the weight
     /// q_kc of each of its nodes in the cell's quadrature of the projected

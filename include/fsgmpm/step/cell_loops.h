@@ -239,48 +239,21 @@ namespace fsgmpm
      * Stress integration = nodal projection: the share gamma_c of cell @p c
      * whose quadrature of the projected stress is the cell's own, V_c /
      * (dim + 1) per node, the rest its points', sum_p N_k(x_p) V_p, from the
-     * smallest fill of its nodes, @p min_node_fill (p2g takes at each node
-     * the smaller of the field's own fill, sum_p N_k(x_p) V_p over the
-     * occupied cells' V_c / (dim + 1) around it, and the material fill of
-     * projection_share). 0 up to a fill of 0.9, 1 when full, linear
-     * between. Inside the material the cell's own weights keep the forces
-     * smooth as points cross edges (the nodal fill is continuous in the
-     * points' positions); in a cell partly filled at a free surface, a
-     * membrane or a body in another velocity field the points' weights
-     * integrate only where there is material, so a uniform stress gives
-     * Eq. (3)'s forces exactly and a nearly empty node is pushed only by
-     * what its points fill. Starting at 0.9 rather than at 3/4 keeps the
-     * points' weights in the cells next to a membrane with nothing outside:
-     * the no-slip geotube's mean tension is 1.8 % below the nominal
-     * solution with it, 3.9 % with 3/4 (doc/accuracy_vs_cost.md section 1).
+     * smallest fill of its nodes, @p min_node_fill (a node's fill is
+     * sum_p N_k(x_p) V_p over the occupied cells' V_c / (dim + 1) around
+     * it). 0 up to a fill of 3/4, 1 from 0.9 on, linear between. Inside the
+     * material the cell's own weights keep the forces smooth as points
+     * cross edges (the nodal fill is continuous in the points' positions,
+     * and 0.9 leaves room for the fill's fluctuations there); in a cell
+     * partly filled at a free surface, a membrane or a body in another
+     * velocity field the points' weights integrate only where there is
+     * material, so a uniform stress gives Eq. (3)'s forces exactly and a
+     * nearly empty node is pushed only by what its points fill.
      */
     inline double
     geometric_quadrature_share(const double min_node_fill)
     {
-      return std::clamp((min_node_fill - 0.9) / 0.1, 0., 1.);
-    }
-
-    /**
-     * Stress integration = nodal projection: the share Theta_i of node i
-     * in the projection, from its material fill @p fill (the points of
-     * every velocity field, sum_p N_i(x_p) V_p, over the grid's nodal
-     * volume sum_c V_c / (dim + 1)). 0 up to half full, 1 from 3/4 on,
-     * linear between. A point integrates w_p = 1 - sum_k N_k(x_p) Theta_k
-     * of its own stress and the rest through the projection (Stages::p2g),
-     * so where the material ends (a free surface, a membrane with nothing
-     * outside) the nearly empty nodes are pushed by their own points'
-     * stresses, not by the one-sided average of a heavier neighbour, which
-     * misses the stress gradient (hydrostatic pressure) by about h |grad
-     * sigma|. Where another field fills the rest of the node (water cut by
-     * a bag) the fill is high and the projection acts. The weights keep
-     * the patch tests and the power identity (test stress_integration):
-     * the geometric quadrature (geometric_quadrature_share) starts above
-     * 3/4, where Theta is 1.
-     */
-    inline double
-    projection_share(const double fill)
-    {
-      return std::clamp((fill - 0.5) / 0.25, 0., 1.);
+      return std::clamp((min_node_fill - 0.75) / 0.15, 0., 1.);
     }
 
     /// Call f(cell) for every occupied cell in parallel (no scatter).

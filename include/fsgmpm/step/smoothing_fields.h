@@ -116,8 +116,7 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(volume_fraction)
              + MemoryConsumption::memory_consumption(lumped_volume)
              + MemoryConsumption::memory_consumption(velocity_gradient)
-             + MemoryConsumption::memory_consumption(nodal_velocity_gradient)
-             + MemoryConsumption::memory_consumption(nodal_projection_share);
+             + MemoryConsumption::memory_consumption(nodal_velocity_gradient);
     }
 
     std::vector<std::vector<double>> numerator, denominator;
@@ -132,11 +131,7 @@ namespace fsgmpm
     /// Stress integration = nodal projection: the cell-volume weighted
     /// nodal average of velocity_gradient (Stages::nodal_velocity_gradients).
     std::vector<Tensor<2, dim>> nodal_velocity_gradient;
-    /// Stress integration = nodal projection: each node's share Theta_i in
-    /// the projection (CellLoops::projection_share), by which
-    /// nodal_velocity_gradient is already multiplied.
-    std::vector<double> nodal_projection_share;
-    unsigned int        n_nodes = 0;
+    unsigned int                n_nodes = 0;
   };
 } // namespace fsgmpm
 

@@ -58,10 +58,8 @@ namespace fsgmpm
         const StressIntegration    integration = StressIntegration::points,
         const std::function<void(unsigned int)> &synchronise = {});
 
-    /// The projected stress field of p2g's nodal projection (which
-    /// integrates it with the nodes' shares Theta_k, the rest at the
-    /// points), at the point of barycentric coordinates @p lambda in cell
-    /// @p c:
+    /// The stress field that p2g's nodal projection integrates, at the
+    /// point of barycentric coordinates @p lambda in cell @p c:
     /// sum_k lambda_k s_k with s_k = volume_stress_k / support_volume_k
     /// (in-plane components in 2D). Returns false, leaving @p stress alone,
     /// where a node of the cell has no support (the last p2g did not project
@@ -232,11 +230,10 @@ namespace fsgmpm
 
     /// With the nodal stress projection, the velocity gradient of a point
     /// at barycentric coordinates @p lambda in cell @p c: sum_k lambda_k
-    /// Theta_k Lbar_k + w_p L_c, w_p = 1 - sum_k lambda_k Theta_k (the
-    /// point's own share, CellLoops::projection_share), which is L at every
-    /// point where the nodal velocities are v = L x (a weighted average of
-    /// the cells' L at each node). Then sum_p V_p sigma_p : L_p is the power
-    /// of p2g's internal forces exactly (test stress_integration).
+    /// Lbar_k, which is L at every point where the nodal velocities are
+    /// v = L x (a weighted average of the cells' L at each node). Then
+    /// sum_p V_p sigma_p : L_p is the power of p2g's internal forces exactly
+    /// (test stress_integration).
     template <int dim>
     inline Tensor<2, dim>
     point_velocity_gradient(const BackgroundGrid<dim>         &grid,
@@ -245,18 +242,9 @@ namespace fsgmpm
                             const std::array<double, dim + 1> &lambda)
     {
       Tensor<2, dim> L;
-      double         w            = 1.;
-      bool           points_share = false;
       for (unsigned int k = 0; k < dim + 1; ++k)
-        {
-          const unsigned int n = grid.cell_nodes[c][k];
-          L += lambda[k] * smoothing.nodal_velocity_gradient[n];
-          const double share = smoothing.nodal_projection_share[n];
-          w -= lambda[k] * share;
-          points_share |= (share < 1.);
-        }
-      if (points_share)
-        L += w * smoothing.cell_velocity_gradient(c);
+        L += lambda[k]
+             * smoothing.nodal_velocity_gradient[grid.cell_nodes[c][k]];
       return L;
     }
 
