@@ -13,14 +13,26 @@ namespace fsgmpm
                                  const double      density,
                                  const PressureLaw law,
                                  const double      exponent,
-                                 const bool        allow_tension)
+                                 const double      tension_cut_off)
     : K(bulk_modulus)
     , mu(viscosity)
     , density(density)
     , law(law)
     , kappa(exponent)
-    , allow_tension(allow_tension)
-  {}
+    , tension_cut_off(tension_cut_off)
+    , J_max(
+        // Invert the law at p_c; the power law's pressure never falls
+        // below -K/kappa, so a cut-off at or below it is no limit.
+        law == PressureLaw::linear
+          ? 1. - tension_cut_off / K
+          : (1. + kappa * tension_cut_off / K > 0
+               ? std::pow(1. + kappa * tension_cut_off / K, -1. / kappa)
+               : std::numeric_limits<double>::infinity()))
+  {
+    AssertThrow(tension_cut_off <= 0,
+                ExcMessage("The tension cut-off of a Newtonian fluid is a "
+                           "gauge pressure at or below zero."));
+  }
 
 
 
@@ -52,8 +64,18 @@ namespace fsgmpm
     prm.declare_entry("Allow tension",
                       "false",
                       Patterns::Bool(),
-                      "Whether the pressure may become negative (tension); "
-                      "if false it is cut off at zero.");
+                      "Whether the pressure may become negative without "
+                      "limit; if false it is cut off at the Tension cut-off.");
+    prm.declare_entry(
+      "Tension cut-off",
+      "0",
+      Patterns::Double(-1e12, 0),
+      "The lowest gauge pressure the fluid carries, in Pa (at or below 0): "
+      "below it the fluid cavitates, its volume grows without pulling. 0 "
+      "(the default): no tension. Water below its surface holds about "
+      "-p_atm + p_vapour = -99 kPa at 20 C. Points the free-surface "
+      "detection flags stay at zero pressure. Leave at 0 when Allow tension "
+      "is true.");
     prm.leave_subsection();
   }
 
@@ -69,9 +91,15 @@ namespace fsgmpm
     const double mu  = prm.get_double("Viscosity");
     const auto   law = prm.get("Pressure law") == "linear" ? PressureLaw::linear
                                                            : PressureLaw::power;
-    const double kappa = prm.get_double("Power-law exponent");
-    const bool   allow = prm.get_bool("Allow tension");
+    const double kappa   = prm.get_double("Power-law exponent");
+    const bool   allow   = prm.get_bool("Allow tension");
+    const double cut_off = prm.get_double("Tension cut-off");
     prm.leave_subsection();
+    AssertThrow(!(allow && cut_off != 0),
+                ExcMessage(path
+                           + "/Newtonian fluid: Allow tension = true lets "
+                             "the fluid pull without limit, and Tension "
+                             "cut-off sets a limit; set one of them."));
     AssertThrow(K > 0,
                 ExcMessage(path
                            + "/Newtonian fluid/Bulk modulus must be "
@@ -80,8 +108,8 @@ namespace fsgmpm
                 ExcMessage(path
                            + "/Newtonian fluid/Power-law exponent must "
                              "be positive."));
-    auto fluid
-      = std::make_unique<NewtonianFluid>(K, mu, density, law, kappa, allow);
+    auto fluid = std::make_unique<NewtonianFluid>(
+      K, mu, density, law, kappa, allow ? no_tension_limit : cut_off);
     fluid->path = path;
     return fluid;
   }
@@ -184,10 +212,10 @@ namespace fsgmpm
   double
   NewtonianFluid::volume_ratio_energy(const double J) const
   {
-    // Without tension p = 0 above J = 1 (and the volume update keeps
-    // J <= 1): no energy there.
-    if (!allow_tension && J >= 1.)
-      return 0.;
+    // Above J_max the pressure is the constant p_c (the volume update keeps
+    // J <= J_max, so only a state set from outside gets there).
+    if (J > J_max)
+      return volume_ratio_energy(J_max) - tension_cut_off * (J - J_max);
     if (law == PressureLaw::linear)
       return 0.5 * K * (1. - J) * (1. - J);
     // int_J^1 (K/kappa)(x^-kappa - 1) dx.

@@ -55,6 +55,8 @@ expect_error "negative density" "Bodies/Body 0/Density|Density" --set "Bodies/Bo
 expect_error "nu = 0.5" "Poisson's ratio" "$2/../prm/elastic_block_drop.prm" --set "Bodies/Body 0/Linear elastic/Poisson's ratio=0.5"
 expect_error "f_c = 1" "Free surface threshold" --set "Bodies/Body 0/Free surface threshold=1"
 expect_error "negative bulk modulus" "Bulk modulus" --set "Bodies/Body 0/Newtonian fluid/Bulk modulus=-2e9"
+expect_error "positive tension cut-off" "Tension cut-off" --set "Bodies/Body 0/Newtonian fluid/Tension cut-off=1e3"
+expect_error "tension cut-off with Allow tension" "Allow tension = true lets the fluid pull without limit, and Tension cut-off sets a limit" --set "Bodies/Body 0/Newtonian fluid/Tension cut-off=-1e5" --set "Bodies/Body 0/Newtonian fluid/Allow tension=true"
 expect_error "unknown material" "Material model" --set "Bodies/Body 0/Material model=honey"
 expect_error "NMD with the nodal stress projection" "Volumetric smoothing = NMD\+ANP cannot be combined" --set "Simulation/Stress integration=nodal projection" --set "Bodies/Body 0/Volumetric smoothing=NMD+ANP"
 expect_error "3D slip on a Gmsh membrane" "slip needs a 2D membrane or, in 3D, an extruded one" "$2/../prm/geotube_A5.56_3d.prm" --set "Membrane/Shape=gmsh"

@@ -12,6 +12,7 @@
 #include <fsgmpm/materials/newtonian_fluid.h>
 #include <gtest/gtest.h>
 
+#include <type_traits>
 #include <vector>
 
 using namespace fsgmpm;
@@ -33,11 +34,19 @@ namespace
 
 TEST(NewtonianFluid, PressureLaws)
 {
-  const double         K = 2.13e9;
-  const NewtonianFluid linear(
-    K, 0, 1000, NewtonianFluid::PressureLaw::linear, 7, true);
-  const NewtonianFluid power(
-    K, 0, 1000, NewtonianFluid::PressureLaw::power, 7, true);
+  const double          K = 2.13e9;
+  const NewtonianFluid  linear(K,
+                              0,
+                              1000,
+                              NewtonianFluid::PressureLaw::linear,
+                              7,
+                              NewtonianFluid::no_tension_limit);
+  const NewtonianFluid  power(K,
+                             0,
+                             1000,
+                             NewtonianFluid::PressureLaw::power,
+                             7,
+                             NewtonianFluid::no_tension_limit);
   const PointKinematics k;
   for (const double J : {0.999, 0.9999, 1.0, 1.0001})
     {
@@ -68,7 +77,7 @@ TEST(NewtonianFluid, ViscousStressInSimpleShear)
 {
   const double         mu = 1.0;
   const NewtonianFluid fluid(
-    2e9, mu, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+    2e9, mu, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.);
   PointKinematics k;
   const double    gamma_dot = 3.0; // v_x = gamma_dot y
   k.strain_rate[0][1]       = 0.5 * gamma_dot;
@@ -86,16 +95,47 @@ TEST(NewtonianFluid, ViscousStressInSimpleShear)
 
 TEST(NewtonianFluid, TensionPolicy)
 {
-  const NewtonianFluid no_tension(
-    2e6, 0, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+  using Law = NewtonianFluid::PressureLaw;
+  const NewtonianFluid no_tension(2e6, 0, 1000, Law::linear, 7, 0.);
   const NewtonianFluid tension(
-    2e6, 0, 1000, NewtonianFluid::PressureLaw::linear, 7, true);
+    2e6, 0, 1000, Law::linear, 7, NewtonianFluid::no_tension_limit);
   const PointKinematics k;
   EXPECT_EQ(trace(stress_at(no_tension, 1.01, k)), 0.);
   EXPECT_NEAR(-trace(stress_at(tension, 1.01, k)) / 3, -2e4, 1e-6);
   EXPECT_EQ(no_tension.admissible_volume_ratio(1.01), 1.);
   EXPECT_EQ(no_tension.admissible_volume_ratio(0.99), 0.99);
   EXPECT_EQ(tension.admissible_volume_ratio(1.01), 1.01);
+
+  // A cut-off p_c = -5 kPa: the law's pressure above it, p_c below, and
+  // the volume ratio capped where the law reaches p_c (linear:
+  // 1 - p_c/K; power: (1 + kappa p_c/K)^(-1/kappa)).
+  const double         p_c = -5e3;
+  const NewtonianFluid linear(2e6, 0, 1000, Law::linear, 7, p_c);
+  const NewtonianFluid power(2e6, 0, 1000, Law::power, 7, p_c);
+  EXPECT_NEAR(-trace(stress_at(linear, 1.001, k)) / 3, -2e3, 1e-6);
+  EXPECT_NEAR(-trace(stress_at(linear, 1.01, k)) / 3, p_c, 1e-9);
+  EXPECT_NEAR(-trace(stress_at(power, 1.001, k)) / 3,
+              2e6 / 7 * (std::pow(1.001, -7.) - 1),
+              1e-6);
+  EXPECT_NEAR(-trace(stress_at(power, 1.01, k)) / 3, p_c, 1e-9);
+  EXPECT_NEAR(linear.admissible_volume_ratio(1.01), 1.0025, 1e-15);
+  EXPECT_EQ(linear.admissible_volume_ratio(1.001), 1.001);
+  EXPECT_NEAR(power.pressure(power.admissible_volume_ratio(1.01)),
+              p_c,
+              1e-9 * 2e6);
+  // The power law never pulls below -K/kappa: a cut-off beyond is none.
+  const NewtonianFluid deep(2e6, 0, 1000, Law::power, 7, -1e6);
+  EXPECT_EQ(deep.admissible_volume_ratio(50.), 50.);
+  // A positive cut-off is refused; a bool does not convert to a cut-off.
+  EXPECT_THROW(NewtonianFluid(2e6, 0, 1000, Law::linear, 7, 1.),
+               dealii::ExceptionBase);
+  static_assert(!std::is_constructible_v<NewtonianFluid,
+                                         double,
+                                         double,
+                                         double,
+                                         Law,
+                                         double,
+                                         bool>);
 }
 
 // The stress stage computes the rotation of the step only for materials
@@ -109,9 +149,9 @@ TEST(NewtonianFluid, OnlyItsOwnClassSkipsTheRotation)
     using NewtonianFluid::NewtonianFluid;
   };
   const NewtonianFluid fluid(
-    2e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+    2e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.);
   const RotatingFluid derived(
-    2e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false);
+    2e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.);
   EXPECT_FALSE(fluid.rotates_stress());
   EXPECT_TRUE(derived.rotates_stress());
   EXPECT_TRUE(static_cast<const Material &>(derived).rotates_stress());
@@ -122,13 +162,13 @@ TEST(NewtonianFluid, OnlyItsOwnClassSkipsTheRotation)
 // summed in point order after the caller's sum, whatever pressure the
 // stress holds (the nodal pressure average overwrites it); e(J) is the
 // integral of the pressure, so de/dJ = -p (central differences, both
-// laws, with and without tension). A derived class that changes the
-// density (step-2's Bingham mud adds its elastic deviator's) gets its own
-// stress-based density through it.
+// laws, without tension, with a cut-off and without limit). A derived class
+// that changes the density (step-2's Bingham mud adds its elastic deviator's)
+// gets its own stress-based density through it.
 TEST(NewtonianFluid, StrainEnergyIsThatOfTheVolumeRatio)
 {
   using Law = NewtonianFluid::PressureLaw;
-  const NewtonianFluid fluid(2.5e6, 1e-3, 1000, Law::linear, 7, false);
+  const NewtonianFluid fluid(2.5e6, 1e-3, 1000, Law::linear, 7, 0.);
   std::vector<SymmetricTensor<2, 3>> stress(5);
   std::vector<double>                volume(5), reference_volume(5);
   for (unsigned int i = 0; i < 5; ++i)
@@ -158,9 +198,9 @@ TEST(NewtonianFluid, StrainEnergyIsThatOfTheVolumeRatio)
 
   for (const Law law : {Law::linear, Law::power})
     for (const double kappa : {7., 1.})
-      for (const bool tension : {false, true})
+      for (const double p_c : {0., -2e3, NewtonianFluid::no_tension_limit})
         {
-          const NewtonianFluid f(2.5e6, 1e-3, 1000, law, kappa, tension);
+          const NewtonianFluid f(2.5e6, 1e-3, 1000, law, kappa, p_c);
           EXPECT_EQ(f.volume_ratio_energy(1.), 0.);
           for (const double J : {0.97, 0.999, 1.002})
             {
@@ -168,7 +208,7 @@ TEST(NewtonianFluid, StrainEnergyIsThatOfTheVolumeRatio)
               const double dedJ
                 = (f.volume_ratio_energy(J + e) - f.volume_ratio_energy(J - e))
                   / (2 * e);
-              const double p = tension || J < 1 ? f.pressure(J) : 0.;
+              const double p = std::max(f.pressure(J), p_c);
               EXPECT_NEAR(dedJ, -p, 1e-6 * 2.5e6) << J;
               EXPECT_GE(f.volume_ratio_energy(J), 0.);
             }
@@ -183,7 +223,7 @@ TEST(NewtonianFluid, StrainEnergyIsThatOfTheVolumeRatio)
       return NewtonianFluid::strain_energy_density(s) + s[0][1] * s[0][1];
     }
   };
-  const ShearEnergyFluid derived(2.5e6, 1e-3, 1000, Law::linear, 7, false);
+  const ShearEnergyFluid derived(2.5e6, 1e-3, 1000, Law::linear, 7, 0.);
   double                 derived_expected = 0;
   for (unsigned int i = 0; i < 5; ++i)
     derived_expected += volume[i] * derived.strain_energy_density(stress[i]);
@@ -226,14 +266,19 @@ TEST(NewtonianFluid, RunCallsAreTheirPointsCalls)
   };
   std::vector<std::unique_ptr<Material>> materials;
   materials.push_back(std::make_unique<NewtonianFluid>(
-    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.));
+  materials.push_back(
+    std::make_unique<NewtonianFluid>(2.5e6,
+                                     1e-3,
+                                     1000,
+                                     NewtonianFluid::PressureLaw::linear,
+                                     7,
+                                     NewtonianFluid::no_tension_limit));
   materials.push_back(std::make_unique<NewtonianFluid>(
-    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, true));
-  materials.push_back(std::make_unique<NewtonianFluid>(
-    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::power, 7, false));
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::power, 7, 0.));
   materials.push_back(std::make_unique<LinearElastic>(1e7, 0.3, 2000));
   materials.push_back(std::make_unique<ShearThickFluid>(
-    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+    2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.));
 
   const unsigned int n = 37;
   PointKinematics    shared;

@@ -463,11 +463,11 @@ namespace
     };
     std::vector<std::unique_ptr<Material>> materials;
     materials.push_back(std::make_unique<NewtonianFluid>(
-      2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+      2.5e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.));
     materials.push_back(std::make_unique<NewtonianFluid>(
-      2.5e6, 20., 1000, NewtonianFluid::PressureLaw::power, 7, false));
+      2.5e6, 20., 1000, NewtonianFluid::PressureLaw::power, 7, 0.));
     materials.push_back(std::make_unique<StiffFluid>(
-      1e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, false));
+      1e6, 1e-3, 1000, NewtonianFluid::PressureLaw::linear, 7, 0.));
     materials.push_back(std::make_unique<LinearElastic>(1e7, 0.3, 2000));
 
     const auto         grid = test_tools::make_unit_box_grid<dim>(8);

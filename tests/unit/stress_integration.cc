@@ -601,7 +601,12 @@ namespace
   struct RecordingFluid : NewtonianFluid
   {
     RecordingFluid(const bool rotates)
-      : NewtonianFluid(2e6, 1e-3, 1000, PressureLaw::linear, 7, true)
+      : NewtonianFluid(2e6,
+                       1e-3,
+                       1000,
+                       PressureLaw::linear,
+                       7,
+                       NewtonianFluid::no_tension_limit)
       , rotates(rotates)
     {}
 

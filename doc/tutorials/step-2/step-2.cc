@@ -98,7 +98,7 @@ namespace Step2
                        density,
                        PressureLaw::linear,
                        7,
-                       false)
+                       0.)
       , tau_y(yield_stress)
       , G(shear_modulus)
     {}

@@ -6,6 +6,7 @@
 #include <fsgmpm/materials/material.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <typeinfo>
 
@@ -20,8 +21,11 @@ namespace fsgmpm
    *                     bulk modulus K_f at the reference state)
    * The volume is updated by the stress stage with the same (NMD-smoothed)
    * volumetric strain rate, so pressure and density stay consistent.
-   * Tension policy: unless Allow tension is set, p >= 0 (cavitation at zero
-   * gauge pressure).
+   * Tension policy: p >= p_c, the tension cut-off (a gauge pressure <= 0;
+   * 0, the default, is cavitation at zero gauge pressure, -infinity no
+   * limit). The volume ratio is capped where the law reaches p_c, so the
+   * cloud cannot expand further without pulling. Points the free-surface
+   * detection flags are reset to zero pressure whatever p_c.
    */
   class NewtonianFluid : public Material
   {
@@ -37,7 +41,21 @@ namespace fsgmpm
                    const double      density,
                    const PressureLaw law,
                    const double      exponent,
-                   const bool        allow_tension);
+                   const double      tension_cut_off);
+
+    /// A bool would convert silently to a cut-off of 0 or 1 Pa: pass
+    /// 0. or no_tension_limit instead.
+    NewtonianFluid(const double,
+                   const double,
+                   const double,
+                   const PressureLaw,
+                   const double,
+                   const bool)
+      = delete;
+
+    /// The tension_cut_off of a fluid that may pull without limit.
+    static constexpr double no_tension_limit
+      = -std::numeric_limits<double>::infinity();
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -101,7 +119,8 @@ namespace fsgmpm
                       double                       energy) const override;
 
     /// e(J) = int_J^1 p(J') dJ' per unit reference volume, with the tension
-    /// cut-off: K (1 - J)^2 / 2 for the linear law.
+    /// cut-off (p = p_c above J_max): K (1 - J)^2 / 2 for the linear law
+    /// up to J_max.
     double
     volume_ratio_energy(const double J) const;
 
@@ -125,7 +144,7 @@ namespace fsgmpm
     double
     admissible_volume_ratio(const double J) const override
     {
-      return allow_tension ? J : std::min(J, 1.);
+      return std::min(J, J_max);
     }
 
     bool
@@ -150,7 +169,11 @@ namespace fsgmpm
     const double      K, mu, density;
     const PressureLaw law;
     const double      kappa;
-    const bool        allow_tension;
+    /// p_c: the lowest gauge pressure the fluid carries (<= 0).
+    const double tension_cut_off;
+    /// The volume ratio at which the law reaches p_c (1 for p_c = 0,
+    /// infinity where the law never reaches it).
+    const double J_max;
     /// The body's parameter path ("Bodies/Body 0"), for messages.
     std::string path;
 
@@ -163,9 +186,7 @@ namespace fsgmpm
                  const double                 J,
                  SymmetricTensor<2, 3>       &s) const
     {
-      double p = pressure(J);
-      if (!allow_tension)
-        p = std::max(p, 0.);
+      const double p      = std::max(pressure(J), tension_cut_off);
       const double two_mu = 2. * mu;
       const double mean   = trace(d) / 3;
       for (unsigned int a = 0; a < 3; ++a)
