@@ -5,7 +5,8 @@
 #   added_mass_release.sh <fsgmpm> <source dir> panel
 # doc/scripts/added_mass.py's panel method against the closed forms of a
 # circle and an ellipse moving along its minor axis (rho pi a^2): within
-# 0.2% (measured 0.07% with 2000 panels). About 10 s.
+# 0.2% (measured 0.07% with 2000 panels); doc/scripts/drag_balance.py's
+# v(t) starts at the slope a_0 and approaches v_t. About 20 s.
 #   added_mass_release.sh <fsgmpm> <source dir> release SHAPE TOL_V TOL_Y
 # prm/geocontainer_SHAPE.prm at 2 cm, the water to 1.6 m and the bag's
 # lowest point at 0.9 m, released at rest, to 0.12 s: the accelerations
@@ -23,6 +24,18 @@ if [ "$mode" = panel ]; then
                                 if (e > 0.2) bad = 1 }
          END { exit bad || n != 2 }' ||
     { echo "added_mass.py: the panel method misses the closed forms"; exit 1; }
+  # The drag balance released at rest: its slope at the start is a_0, it
+  # approaches v_t from below.
+  for shape in ellipse polygon; do
+    /usr/bin/python3 "$src/doc/scripts/drag_balance.py" "$shape" |
+      tee /dev/stderr | awk '
+        NR == 1 { split($0, f, "a_0 = "); a0 = f[2] + 0
+                  split($0, g, "v_t = "); vt = g[2] + 0 }
+        $1 == "0.10" { ok0 = ($2 / 0.1 > 0.97 * a0 && $2 / 0.1 <= a0) }
+        $1 == "1.00" { ok1 = ($2 < vt && $2 > 0.9 * vt) }
+        END { exit !(ok0 && ok1) }' ||
+      { echo "drag_balance.py: v(t) is not the balance's"; exit 1; }
+  done
   echo "added mass panel method: ok"
   exit 0
 fi
