@@ -13,7 +13,8 @@
 # hydrostatic far from the bag (mean within 0.2 kPa, measured at most 0.11
 # as the entry's pressure wave passes; standard deviation below 0.1 kPa,
 # measured 0.06) and smoother than the points' own at 0.05 s (measured
-# 0.06 against 0.18 kPa). Uses
+# 0.06 against 0.18 kPa); doc/scripts/entry_cavity.py must find no air
+# cavity yet (below 0.001 m^2, measured 0). Uses
 # Debian's python3-matplotlib.
 set -euo pipefail
 exe=$1
@@ -49,6 +50,12 @@ awk 'NR > 1 { rows++; if ($6 > 0.1 || $5 < -0.2 || $5 > 0.2) bad = 1
      END { exit bad || rows != 6 || last_projected >= last_own }' \
   "$work/pattern" \
   || { echo "pressure_pattern.py: unexpected values"; exit 1; }
+/usr/bin/python3 "$src/doc/scripts/entry_cavity.py" polygon "$work/run" \
+  > "$work/cavity"
+cat "$work/cavity"
+awk 'NR > 2 { rows++; if ($3 > 0.001) bad = 1 }
+     END { exit bad || rows != 5 }' "$work/cavity" \
+  || { echo "entry_cavity.py: unexpected values"; exit 1; }
 for f in v.png s.png; do
   [ -s "$work/$f" ] || { echo "missing $f"; exit 1; }
 done
