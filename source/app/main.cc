@@ -22,6 +22,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -107,13 +108,58 @@ namespace
     print(tree, 0);
   }
 
+  /// The run's input into its output directory, so that it explains
+  /// itself: parameters.prm (every entry with its resolved value, as
+  /// --print-parameters writes it; it runs as a scene file) and
+  /// command_line.txt (the version and the command). Each is written to a
+  /// temporary name and renamed, so that no half-written file is left.
+  void
+  write_run_input(const ParameterHandler &prm, const std::string &command)
+  {
+    namespace fs = std::filesystem;
+    if (Utilities::MPI::job_supports_mpi()
+        && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    ParameterHandler &p = const_cast<ParameterHandler &>(prm);
+    p.enter_subsection("Output");
+    const fs::path dir = p.get("Directory");
+    p.leave_subsection();
+    fs::create_directories(dir);
+    const auto write = [&](const std::string                         &name,
+                           const std::function<void(std::ostream &)> &body) {
+      const fs::path target = dir / name;
+      const fs::path tmp    = dir / (name + ".tmp");
+      {
+        std::ofstream out(tmp);
+        AssertThrow(out,
+                    ExcMessage("Output/Directory: cannot write <" + tmp.string()
+                               + ">."));
+        body(out);
+        AssertThrow(out,
+                    ExcMessage("Output/Directory: writing <" + tmp.string()
+                               + "> failed."));
+      }
+      fs::rename(tmp, target);
+    };
+    write("parameters.prm",
+          [&](std::ostream &out) { print_parameter_manual(prm, out); });
+    write("command_line.txt", [&](std::ostream &out) {
+      out << "fsgmpm " << FSGMPM_VERSION << "\n" << command << "\n";
+    });
+  }
+
   template <int dim>
   int
-  run_scene(ParameterHandler &prm, const std::string &restart_directory)
+  run_scene(ParameterHandler  &prm,
+            const std::string &restart_directory,
+            const std::string &command)
   {
     fsgmpm::Simulator<dim> simulator(prm);
     if (!restart_directory.empty())
       simulator.restart(restart_directory);
+    // After the scene has been validated and built: nothing is written for
+    // a run that cannot start.
+    write_run_input(prm, command);
     const fsgmpm::Termination termination = simulator.run();
     return termination == fsgmpm::Termination::unstable
              ? 3
@@ -237,8 +283,17 @@ main(int argc, char **argv)
         }
 
       const unsigned int dim = fsgmpm::get_dimension(prm);
-      return dim == 2 ? run_scene<2>(prm, restart_directory)
-                      : run_scene<3>(prm, restart_directory);
+      // The command as a shell would take it back: each argument quoted.
+      std::string command;
+      for (int i = 0; i < argc; ++i)
+        {
+          std::string quoted = "'";
+          for (const char c : std::string(argv[i]))
+            quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+          command += (i > 0 ? " " : "") + quoted + "'";
+        }
+      return dim == 2 ? run_scene<2>(prm, restart_directory, command)
+                      : run_scene<3>(prm, restart_directory, command);
     }
   catch (dealii::ExceptionBase &e)
     {

@@ -3,7 +3,8 @@
 # prm/default_dam_break.prm, a coarse water-column collapse) runs, writes
 # ParaView output, monitors.csv with the dam-break columns and summary.json,
 # and loses no particle; the same scene from the prm file gives the same
-# monitors. Shortened to 0.05 s of simulated time for ctest.
+# monitors, as does the parameters.prm the run writes beside its output
+# (with command_line.txt). Shortened to 0.05 s of simulated time for ctest.
 # Usage: default_scene.sh <fsgmpm> <source dir>
 set -eu
 exe=$1
@@ -29,5 +30,12 @@ PY
 "$exe" "$2/prm/default_dam_break.prm" --set "Simulation/End time=0.05" \
   --set "Output/Directory=out2" --set "Output/Quiet=true"
 cmp out/monitors.csv out2/monitors.csv
+# The run explains itself: its resolved parameters run as a scene file and
+# give the same monitors; the command line and version are beside them.
+test -s out/parameters.prm
+grep -q "^fsgmpm " out/command_line.txt
+grep -q "'Simulation/End time=0.05'" out/command_line.txt
+"$exe" out/parameters.prm --set "Output/Directory=out3" --set "Output/Quiet=true"
+cmp out/monitors.csv out3/monitors.csv
 ! ls out/*.tmp.* 2>/dev/null
 echo "default scene: 1 passed, 0 failed"
