@@ -37,5 +37,9 @@ grep -q "^fsgmpm " out/command_line.txt
 grep -q "'Simulation/End time=0.05'" out/command_line.txt
 "$exe" out/parameters.prm --set "Output/Directory=out3" --set "Output/Quiet=true"
 cmp out/monitors.csv out3/monitors.csv
+# A rerun into a directory with an earlier run's results says so.
+"$exe" --set "Simulation/End time=0.001" --set "Output/Directory=out3" \
+  --set "Output/Quiet=true" 2> rerun.err
+grep -q "out3 holds the results of an earlier run" rerun.err
 ! ls out/*.tmp.* 2>/dev/null
 echo "default scene: 1 passed, 0 failed"
