@@ -976,8 +976,9 @@ namespace fsgmpm
         fs::create_directories(dir);
         // A rerun into the directory of an earlier run replaces its
         // results: say so (on standard error, even when quiet).
-        if (!resumed && (fs::exists(fs::path(dir) / "monitors.csv")
-                         || fs::exists(fs::path(dir) / "summary.json")))
+        if (!resumed
+            && (fs::exists(fs::path(dir) / "monitors.csv")
+                || fs::exists(fs::path(dir) / "summary.json")))
           std::cerr << "fsgmpm: note: " << dir
                     << " holds the results of an earlier run; this run "
                        "replaces its monitors.csv, summary.json, checkpoints "
