@@ -124,6 +124,21 @@ def ellipse_axes(circumference, area):
     return a, ab / a
 
 
+# The shipped sections (prm/geocontainer_ellipse.prm, _polygon.prm): the
+# circumference and enclosed area, and the pentagon's vertices,
+# counter-clockwise.
+CIRCUMFERENCE, AREA = 0.62, 0.0202429
+POLYGON = [(1.0, 0.8), (1.13564, 0.88007), (1.09495, 0.92076),
+           (0.90505, 0.92076), (0.86436, 0.88007)]
+
+
+def polygon_area(vertices):
+    """The area of a closed polygon (shoelace formula)."""
+    p = np.asarray(vertices, float)
+    return 0.5 * abs(np.sum(p[:, 0] * np.roll(p[:, 1], -1)
+                            - np.roll(p[:, 0], -1) * p[:, 1]))
+
+
 def main():
     args = sys.argv[1:]
     panels = 2000
@@ -147,16 +162,10 @@ def main():
         exact = rho * math.pi * a * a
         print(f"{name:40s} {m:10.3f} {exact:10.3f} {m / exact - 1:+9.2%}")
 
-    circumference, area = 0.62, 0.0202429
+    circumference, area = CIRCUMFERENCE, AREA
     a, b = ellipse_axes(circumference, area)
-    # Polygon vertices as in prm/geocontainer_polygon.prm, counter-clockwise.
-    polygon = [(1.0, 0.8), (1.13564, 0.88007), (1.09495, 0.92076),
-               (0.90505, 0.92076), (0.86436, 0.88007)]
-    p = np.array(polygon)
-    polygon_area = 0.5 * abs(np.sum(p[:, 0] * np.roll(p[:, 1], -1)
-                                    - np.roll(p[:, 0], -1) * p[:, 1]))
     sections = [("ellipse", ellipse((1.0, 0.8 + b), a, b, panels), area),
-                ("polygon", refine(polygon, panels), polygon_area)]
+                ("polygon", refine(POLYGON, panels), polygon_area(POLYGON))]
     images = ()
     if tank:
         x0, x1, floor, surface = tank

@@ -30,9 +30,9 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from added_mass import ellipse_axes  # noqa: E402
-from release_acceleration import (AREA, CIRCUMFERENCE, POLYGON,  # noqa: E402
-                                  section_added_mass)
+from added_mass import (AREA, CIRCUMFERENCE, POLYGON,  # noqa: E402
+                        ellipse_axes, polygon_area)
+from release_acceleration import section_added_mass  # noqa: E402
 
 
 def balance(shape, rho=1000., g=9.81):
@@ -42,13 +42,13 @@ def balance(shape, rho=1000., g=9.81):
     else:
         x = [p[0] for p in POLYGON]
         width = max(x) - min(x)
-        p = np.array(POLYGON)
-        area = 0.5 * abs(np.sum(p[:, 0] * np.roll(p[:, 1], -1)
-                                - np.roll(p[:, 0], -1) * p[:, 1]))
+        area = polygon_area(POLYGON)
     m = 1900 * area + 0.3 * CIRCUMFERENCE
     net = (m - rho * area) * g
-    a0 = net / (m + section_added_mass(shape, rho))
-    return width, a0, lambda cd: math.sqrt(2 * net / (rho * cd * width))
+    m_a = section_added_mass(shape, rho)
+    a0 = net / (m + m_a)
+    return (width, a0, m_a,
+            lambda cd: math.sqrt(2 * net / (rho * cd * width)))
 
 
 def main():
@@ -56,7 +56,7 @@ def main():
                                                           "polygon"):
         sys.exit(__doc__)
     shape = sys.argv[1]
-    width, a0, terminal = balance(shape)
+    width, a0, _, terminal = balance(shape)
     coefficients = (1.6, 2.0)
     times = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0]
     run = None

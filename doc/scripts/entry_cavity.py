@@ -30,7 +30,6 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from drag_balance import balance  # noqa: E402
 from read_vtu import read_vtu  # noqa: E402
-from release_acceleration import section_added_mass  # noqa: E402
 
 
 def open_cavity(f, centre, h, level):
@@ -55,9 +54,8 @@ def main():
     h = float(sys.argv[3]) if len(sys.argv) > 3 else 0.02
     level = float(sys.argv[4]) if len(sys.argv) > 4 else 0.8
     rho, g, cd = 1000., 9.81, 2.0
-    width, a0, _ = balance(shape)
-    m_a = section_added_mass(shape, rho)
-    # a0 = net / (m + m_a)
+    # The section's width and added mass (one panel solve).
+    width, _, m_a, _ = balance(shape)
     with open(os.path.join(run, "monitors.csv")) as f:
         rows = list(csv.DictReader(f))
     t = np.array([float(r["time"]) for r in rows])

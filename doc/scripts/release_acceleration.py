@@ -17,18 +17,14 @@ the run's own sand mass (body_mass_0) and enclosed area, the textile's
 0.3 kg/m^2 over 0.62 m. The last line gives both fits' errors against it.
 """
 import csv
-import math
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from added_mass import added_mass, ellipse, ellipse_axes, refine  # noqa: E402
-
-CIRCUMFERENCE, AREA = 0.62, 0.0202429
-POLYGON = [(1.0, 0.8), (1.13564, 0.88007), (1.09495, 0.92076),
-           (0.90505, 0.92076), (0.86436, 0.88007)]
+from added_mass import (AREA, CIRCUMFERENCE, POLYGON, added_mass,  # noqa: E402
+                        ellipse, ellipse_axes, refine)
 
 
 def section_added_mass(shape, rho=1000.):
