@@ -114,16 +114,15 @@ namespace
   /// command_line.txt (the version and the command). Each is written to a
   /// temporary name and renamed, so that no half-written file is left.
   void
-  write_run_input(const ParameterHandler &prm, const std::string &command)
+  write_run_input(ParameterHandler &prm, const std::string &command)
   {
     namespace fs = std::filesystem;
     if (Utilities::MPI::job_supports_mpi()
         && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
-    ParameterHandler &p = const_cast<ParameterHandler &>(prm);
-    p.enter_subsection("Output");
-    const fs::path dir = p.get("Directory");
-    p.leave_subsection();
+    prm.enter_subsection("Output");
+    const fs::path dir = prm.get("Directory");
+    prm.leave_subsection();
     fs::create_directories(dir);
     const auto write = [&](const std::string                         &name,
                            const std::function<void(std::ostream &)> &body) {

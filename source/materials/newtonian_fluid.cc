@@ -4,6 +4,7 @@
 #include <fsgmpm/materials/newtonian_fluid.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace fsgmpm
@@ -20,14 +21,7 @@ namespace fsgmpm
     , law(law)
     , kappa(exponent)
     , tension_cut_off(tension_cut_off)
-    , J_max(
-        // Invert the law at p_c; the power law's pressure never falls
-        // below -K/kappa, so a cut-off at or below it is no limit.
-        law == PressureLaw::linear
-          ? 1. - tension_cut_off / K
-          : (1. + kappa * tension_cut_off / K > 0
-               ? std::pow(1. + kappa * tension_cut_off / K, -1. / kappa)
-               : std::numeric_limits<double>::infinity()))
+    , J_max(volume_ratio_of_law(tension_cut_off))
   {
     AssertThrow(tension_cut_off <= 0,
                 ExcMessage("The tension cut-off of a Newtonian fluid is a "
@@ -126,11 +120,22 @@ namespace fsgmpm
 
 
   double
+  NewtonianFluid::volume_ratio_of_law(const double p) const
+  {
+    // The power law's pressure never falls below -K/kappa: no volume ratio
+    // reaches a pressure at or below it.
+    if (law == PressureLaw::linear)
+      return 1. - p / K;
+    return 1. + kappa * p / K > 0 ? std::pow(1. + kappa * p / K, -1. / kappa)
+                                  : std::numeric_limits<double>::infinity();
+  }
+
+
+
+  double
   NewtonianFluid::volume_ratio_for_pressure(const double p) const
   {
-    const double J = law == PressureLaw::linear
-                       ? 1. - p / K
-                       : std::pow(1. + kappa * p / K, -1. / kappa);
+    const double J = volume_ratio_of_law(p);
     if (!(std::isfinite(J) && J > 0.5 && J < 2))
       {
         std::ostringstream message;

@@ -312,10 +312,11 @@ end
                 << velocities[i] << " m/s"
                 << (i == 3 ? " (experiment 0.8 m/s)\n" : "\n");
     const auto [bottom, top] = membrane_heights(membrane);
-    std::cout << std::setprecision(3)
-              << (landed_at > 0 ? "Landed at " : "Not landed by ")
-              << simulator.get_time() << " s, the lowest node " << bottom
-              << " m above the floor (the paper's simulation: landed at 1.1 s).\n";
+    std::cout
+      << std::setprecision(3)
+      << (landed_at > 0 ? "Landed at " : "Not landed by ")
+      << simulator.get_time() << " s, the lowest node " << bottom
+      << " m above the floor (the paper's simulation: landed at 1.1 s).\n";
     const auto b = measure_bodies(simulator.get_particles());
     if (top < water_level)
       std::cout << "The water's centre of mass rose "

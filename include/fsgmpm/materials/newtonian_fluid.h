@@ -178,6 +178,12 @@ namespace fsgmpm
     std::string path;
 
   private:
+    /// The law inverted: the volume ratio at pressure p (infinity where
+    /// the power law never reaches p). Declared members K, law and kappa
+    /// are set before J_max, which the constructor takes from it.
+    double
+    volume_ratio_of_law(const double p) const;
+
     /// Eq. (13): sigma = -p I + 2 mu dev(d) at the volume ratio J, written
     /// out component by component (the same operations as deviator(),
     /// cheaper).
