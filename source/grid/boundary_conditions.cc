@@ -82,6 +82,9 @@ namespace fsgmpm
     const std::map<types::boundary_id, WallCondition> &walls,
     const MovingWallParameters                        &moving_wall_parameters)
   {
+    for (const auto &[id, w] : walls)
+      any_unilateral_wall = any_unilateral_wall || w.type == WallType::slip
+                            || w.type == WallType::friction;
     if (moving_wall_parameters.enabled)
       moving_wall
         = std::make_unique<MovingWall<dim>>(moving_wall_parameters, grid);

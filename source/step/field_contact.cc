@@ -128,8 +128,9 @@ namespace fsgmpm
           const Tensor<1, dim> old0 = v0, old1 = v1;
           v0 += change;
           v1 -= (m0 / m1) * change;
-          constraints.apply_kinematic(i, v0);
-          constraints.apply_kinematic(j, v1);
+          const bool walls = !nodes.wall_contact.empty();
+          constraints.apply_kinematic(i, v0, walls ? nodes.wall_contact[i] : 0);
+          constraints.apply_kinematic(j, v1, walls ? nodes.wall_contact[j] : 0);
           if (update_acceleration)
             {
               nodes.acceleration[i] += (v0 - old0) / dt;

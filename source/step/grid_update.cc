@@ -31,6 +31,9 @@ namespace fsgmpm
       // chunks (CellLoops::compensated_sums): the same for any number of
       // threads.
       const auto &active = nodes.active_nodes;
+      if (constraints.has_unilateral_walls())
+        nodes.use(nodes.wall_contact);
+      const bool remember_contact = !nodes.wall_contact.empty();
       // Mass scaling's fictitious inertia (sized only when it is used).
       const bool scaled = !nodes.added_mass.empty();
       // Nodes with (almost) no mass carry no information; the remap of
@@ -67,7 +70,9 @@ namespace fsgmpm
                      * (invert(m * unit_symmetric_tensor<dim>()
                                + nodes.added_mass[i])
                         * (unbalanced + damping));
-          constraints.apply(i, v_new);
+          const std::uint8_t contact = constraints.apply(i, v_new);
+          if (remember_contact)
+            nodes.wall_contact[i] = contact;
           nodes.velocity[i]     = v_new;
           nodes.acceleration[i] = (v_new - v_old) / dt;
 

@@ -75,7 +75,8 @@ namespace fsgmpm
         membrane->remap(nodes);
 
       // Eq. (20) with the lumped mass matrix. Walls act kinematically only:
-      // the friction impulse was applied once, in the grid update.
+      // the friction impulse was applied once, in the grid update; a node
+      // that static friction held there stays at rest.
       for_each_node(nodes.active_nodes, [&](const unsigned int i) {
         if (nodes.mass[i] > 0)
           {
@@ -87,7 +88,11 @@ namespace fsgmpm
                 nodes.velocity[i] = weight * updated_velocity[i]
                                     + (1 - weight) * nodes.velocity[i];
               }
-            constraints.apply_kinematic(i, nodes.velocity[i]);
+            constraints.apply_kinematic(i,
+                                        nodes.velocity[i],
+                                        nodes.wall_contact.empty()
+                                          ? 0
+                                          : nodes.wall_contact[i]);
           }
       });
     }

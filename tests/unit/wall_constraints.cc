@@ -12,6 +12,9 @@
 //   nodal momentum (which moves the points) equals the points' momentum:
 //   the remap gives no second friction impulse, and no floor node moves
 //   into the floor. All to 1e-12 (relative).
+// - contact kept: a node a unilateral wall pushed in the grid update keeps
+//   zero normal velocity in the remap (both ways), a node static friction
+//   stopped stays at rest, a node the wall did not push may leave;
 // - the parser reads 'slip' as the unilateral frictionless wall.
 
 #include <fsgmpm/grid/background_grid.h>
@@ -201,9 +204,65 @@ namespace
       << "the remap changed the tangential momentum (a second friction "
          "impulse?)";
   }
+
+  // What the grid update's wall did is kept in the remap of the same step:
+  // a node a unilateral wall pushed may not leave it (its remapped velocity
+  // away from the wall loses the normal component), a node static friction
+  // stopped stays at rest, and a node the wall did not push may leave.
+  template <int dim>
+  void
+  check_contact_kept_in_the_remap()
+  {
+    const auto         grid = make_grid<dim>();
+    const unsigned int i    = floor_node(*grid);
+    ASSERT_NE(i, BackgroundGrid<dim>::invalid);
+    const Tensor<1, dim> into       = vector<dim>(0.6, -0.5, 0.8),
+                         away       = vector<dim>(0.6, 0.5, 0.8),
+                         slow       = vector<dim>(0.1, -0.5, 0.);
+    const Tensor<1, dim> tangential = vector<dim>(0.6, 0, 0.8);
+    for (const std::string walls : {"2: slip", "2: friction 0.4"})
+      {
+        const NodalConstraints<dim> constraints(*grid,
+                                                parse_wall_conditions(walls,
+                                                                      "test"));
+        Tensor<1, dim>              v       = into;
+        const std::uint8_t          contact = constraints.apply(i, v);
+        EXPECT_NE(contact, 0) << walls;
+        Tensor<1, dim> remapped = away;
+        constraints.apply_kinematic(i, remapped, contact);
+        EXPECT_LT((remapped - tangential).norm(), 1e-14)
+          << walls << ": pushed in the grid update, left in the remap";
+        Tensor<1, dim>     free = away;
+        const std::uint8_t none = constraints.apply(i, free);
+        EXPECT_EQ(none, 0) << walls;
+        constraints.apply_kinematic(i, free, none);
+        EXPECT_LT((free - away).norm(), 1e-14) << walls;
+      }
+    const NodalConstraints<dim> friction(*grid,
+                                         parse_wall_conditions("2: friction "
+                                                               "0.4",
+                                                               "test"));
+    Tensor<1, dim>              v = slow; // |v_t| = 0.1 < mu v_n = 0.2: sticks
+    const std::uint8_t          stuck = friction.apply(i, v);
+    EXPECT_LT(v.norm(), 1e-14);
+    Tensor<1, dim> remapped = tangential;
+    friction.apply_kinematic(i, remapped, stuck);
+    EXPECT_LT(remapped.norm(), 1e-14) << "stuck in the grid update, slid in "
+                                         "the remap";
+  }
 } // namespace
 
 
+
+TEST(WallConstraints, ContactKeptInTheRemap2D)
+{
+  check_contact_kept_in_the_remap<2>();
+}
+
+TEST(WallConstraints, ContactKeptInTheRemap3D)
+{
+  check_contact_kept_in_the_remap<3>();
+}
 
 TEST(WallConstraints, WallTypes2D)
 {

@@ -8,6 +8,7 @@
 #include <fsgmpm/grid/moving_wall.h>
 #include <fsgmpm/grid/wall_condition.h>
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -52,12 +53,14 @@ namespace fsgmpm
      * v^{n+1} of the grid update: fixed walls stop the node, rollers remove
      * the normal component, slip and friction walls remove the component
      * into the wall and, for friction, reduce the tangential speed by
-     * mu times that normal speed (Coulomb, down to rest).
+     * mu times that normal speed (Coulomb, down to rest). Returns what the
+     * walls did, for apply_kinematic() in the remap: a bit per unilateral
+     * wall that pushed the node, and one where static friction held it.
      */
-    void
+    std::uint8_t
     apply(const unsigned int node, Tensor<1, dim> &v) const
     {
-      constrain(node, v, true);
+      return constrain(node, v, true, 0);
     }
 
     /**
@@ -67,11 +70,31 @@ namespace fsgmpm
      * already given by apply() in the grid update and reached the points
      * through their accelerations; reducing the tangential velocity again
      * here would apply it twice to the positions and strain rates.
+     * @p contact is what apply() returned for the node in the grid update:
+     * a unilateral wall that held the node there holds its normal velocity
+     * at zero here too, both ways (the remapped velocity may not leave the
+     * wall in the step in which the wall pushed the node), and a node that
+     * static friction held at rest stays at rest (a remapped velocity
+     * sliding along the wall let a block below its friction angle creep
+     * down the slope).
      */
     void
-    apply_kinematic(const unsigned int node, Tensor<1, dim> &v) const
+    apply_kinematic(const unsigned int node,
+                    Tensor<1, dim>    &v,
+                    const std::uint8_t contact = 0) const
     {
-      constrain(node, v, false);
+      if (contact & stuck_flag)
+        v = Tensor<1, dim>();
+      else
+        constrain(node, v, false, contact);
+    }
+
+    /// Whether any wall is unilateral (slip or friction), whose contact the
+    /// remap must remember (NodalFields::wall_contact).
+    bool
+    has_unilateral_walls() const
+    {
+      return any_unilateral_wall;
     }
 
     /// Remove the constrained components of a nodal vector (for the force
@@ -105,11 +128,17 @@ namespace fsgmpm
     }
 
   private:
-    /// apply() (with_friction) and apply_kinematic().
-    void
+    /// A bit of apply()'s result: static friction held the node at rest.
+    static constexpr std::uint8_t stuck_flag = 0x80;
+
+    /// apply() (with_friction) and apply_kinematic() (@p contact: what
+    /// apply() returned). Returns bit k set where unilateral wall k pushed
+    /// the node, and stuck_flag where a friction wall stopped it.
+    std::uint8_t
     constrain(const unsigned int node,
               Tensor<1, dim>    &v,
-              const bool         with_friction) const
+              const bool         with_friction,
+              const std::uint8_t contact) const
     {
       // The moving wall first: frictionless and unilateral, on the velocity
       // relative to the wall (a slip wall in the wall's frame).
@@ -122,20 +151,22 @@ namespace fsgmpm
         }
       const unsigned int idx = node_to_entry[node];
       if (idx == BackgroundGrid<dim>::invalid)
-        return;
+        return 0;
       const Entry &e = entries[idx];
       if (e.fixed)
         {
           v = Tensor<1, dim>();
-          return;
+          return 0;
         }
+      std::uint8_t state = 0;
       for (unsigned int k = 0; k < e.n_walls; ++k)
         {
           const double vn = v * e.normal[k];
-          if (e.type[k] == WallType::roller)
+          if (e.type[k] == WallType::roller || (contact & (1u << k)))
             v -= vn * e.normal[k];
           else if (vn > 0) // slip or friction wall: only when moving into it
             {
+              state |= (1u << k);
               if (!with_friction)
                 {
                   v -= vn * e.normal[k];
@@ -144,9 +175,16 @@ namespace fsgmpm
               Tensor<1, dim> vt  = v - vn * e.normal[k];
               const double   vtn = vt.norm();
               const double   red = e.friction[k] * vn;
-              v = (vtn > red) ? vt * (1. - red / vtn) : Tensor<1, dim>();
+              if (vtn > red)
+                v = vt * (1. - red / vtn);
+              else
+                {
+                  v = Tensor<1, dim>();
+                  state |= stuck_flag;
+                }
             }
         }
+      return state;
     }
 
     struct Entry
@@ -160,6 +198,7 @@ namespace fsgmpm
     std::vector<Entry>               entries;
     std::vector<unsigned int>        node_to_entry;
     std::unique_ptr<MovingWall<dim>> moving_wall;
+    bool                             any_unilateral_wall = false;
   };
 } // namespace fsgmpm
 

@@ -61,6 +61,7 @@ namespace fsgmpm
       release(lumped_volume);
       release(occupied_volume);
       release(projection_weights);
+      release(wall_contact);
       refill(active_stamp, n_nodes);
       release(active_nodes);
       stamp = 0;
@@ -78,6 +79,8 @@ namespace fsgmpm
         acceleration[i]   = Tensor<1, dim>();
         if (!added_mass.empty())
           added_mass[i] = SymmetricTensor<2, dim>();
+        if (!wall_contact.empty())
+          wall_contact[i] = 0;
         if (!volume_stress.empty())
           {
             volume_stress[i]   = Tensor<2, dim>();
@@ -124,6 +127,7 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(lumped_volume)
              + MemoryConsumption::memory_consumption(occupied_volume)
              + MemoryConsumption::memory_consumption(projection_weights)
+             + MemoryConsumption::memory_consumption(wall_contact)
              + MemoryConsumption::memory_consumption(active_nodes)
              + MemoryConsumption::memory_consumption(active_stamp);
     }
@@ -186,6 +190,11 @@ namespace fsgmpm
     /// q_kc of each of its nodes in the cell's quadrature of the projected
     /// stress (Stages::p2g).
     std::vector<std::array<double, dim + 1>> projection_weights;
+
+    /// Unilateral walls (empty without): what the walls did to the node in
+    /// this step's grid update (NodalConstraints::apply), so that the remap
+    /// keeps a node the walls held (NodalConstraints::apply_kinematic).
+    std::vector<std::uint8_t> wall_contact;
 
     std::vector<unsigned int> active_nodes;
     /// active_stamp[i] == stamp: node i is in active_nodes this step.
