@@ -62,6 +62,7 @@ namespace fsgmpm
       release(occupied_volume);
       release(projection_weights);
       release(wall_contact);
+      release(field_contact_state);
       refill(active_stamp, n_nodes);
       release(active_nodes);
       stamp = 0;
@@ -128,6 +129,7 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(occupied_volume)
              + MemoryConsumption::memory_consumption(projection_weights)
              + MemoryConsumption::memory_consumption(wall_contact)
+             + MemoryConsumption::memory_consumption(field_contact_state)
              + MemoryConsumption::memory_consumption(active_nodes)
              + MemoryConsumption::memory_consumption(active_stamp);
     }
@@ -195,6 +197,11 @@ namespace fsgmpm
     /// this step's grid update (NodalConstraints::apply), so that the remap
     /// keeps a node the walls held (NodalConstraints::apply_kinematic).
     std::vector<std::uint8_t> wall_contact;
+    /// Multi-field contact (empty with one velocity field), at a node of
+    /// field 0: what the contact did in this step's grid update (0 none, 1
+    /// held the normal approach, 2 stuck), kept in the remap
+    /// (Stages::field_contact).
+    std::vector<std::uint8_t> field_contact_state;
 
     std::vector<unsigned int> active_nodes;
     /// active_stamp[i] == stamp: node i is in active_nodes this step.
