@@ -106,8 +106,8 @@ namespace fsgmpm
         "fields fill at least this fraction of the node's volume (0 to 1): "
         "bodies that merely share a node across a gap of up to a cell are "
         "not yet in contact. 0: Bardenhagen's original test (both fields "
-        "have mass), which stops bodies early and, with FLIP, returns more "
-        "energy than the impact took (doc/geocontainer_validation.md).");
+        "have mass), which stops bodies up to a cell and a half early "
+        "(doc/geocontainer_validation.md).");
       prm.declare_entry("Gravity",
                         "0, -9.81",
                         Patterns::List(Patterns::Double()),
