@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fsgmpm/base/compensated_sum.h>
+#include <fsgmpm/base/version.h>
 #include <fsgmpm/grid/mesh_generation.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/io/membrane_output.h>
@@ -1227,7 +1228,8 @@ namespace fsgmpm
          {"resident_bytes_per_particle",
           json_number(n_points > 0 ? total_resident / n_points : 0.)},
          {"checkpoint_seconds", json_number(checkpoint_seconds)},
-         {"version", json_string(FSGMPM_VERSION)}};
+         {"version", json_string(FSGMPM_VERSION)},
+         {"git_commit", json_string(git_commit())}};
     write_json(params.output_directory + "/summary.json", entries);
   }
 

@@ -10,6 +10,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <fsgmpm/base/version.h>
 #include <fsgmpm/io/checkpoint_file.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/io/state_checkpoint.h>
@@ -104,7 +105,7 @@ namespace fsgmpm
     std::string file_name;
     {
       CheckpointWriter out((directory / name).string(), communicator);
-      out.put("fsgmpm/version", std::string(FSGMPM_VERSION));
+      out.put("fsgmpm/version", version_string());
       out.put("fsgmpm/dim", double(dim));
       out.put("fsgmpm/parameters", listing_text(parameter_listing));
 

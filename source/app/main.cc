@@ -13,6 +13,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/version.h>
 #include <fsgmpm/default_scene.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>
@@ -143,7 +144,7 @@ namespace
     write("parameters.prm",
           [&](std::ostream &out) { print_parameter_manual(prm, out); });
     write("command_line.txt", [&](std::ostream &out) {
-      out << "fsgmpm " << FSGMPM_VERSION << "\n" << command << "\n";
+      out << "fsgmpm " << fsgmpm::version_string() << "\n" << command << "\n";
     });
   }
 
@@ -221,7 +222,7 @@ main(int argc, char **argv)
             }
           else if (arg == "--version")
             {
-              std::cout << "fsgmpm " << FSGMPM_VERSION << std::endl;
+              std::cout << "fsgmpm " << fsgmpm::version_string() << std::endl;
               return 0;
             }
           else if (arg == "--print-parameters")

@@ -33,7 +33,9 @@ cmp out/monitors.csv out2/monitors.csv
 # The run explains itself: its resolved parameters run as a scene file and
 # give the same monitors; the command line and version are beside them.
 test -s out/parameters.prm
-grep -q "^fsgmpm " out/command_line.txt
+grep -q "^fsgmpm [0-9.]* (git [0-9a-z-]*)$" out/command_line.txt
+"$exe" --version | grep -q "^fsgmpm [0-9.]* (git [0-9a-z-]*)$"
+grep -q '"git_commit": "' out/summary.json
 grep -q "'Simulation/End time=0.05'" out/command_line.txt
 "$exe" out/parameters.prm --set "Output/Directory=out3" --set "Output/Quiet=true"
 cmp out/monitors.csv out3/monitors.csv
