@@ -140,34 +140,33 @@ TEST(GeocontainerDrop, CoarseDropKeepsMaterialsApartAndAccelerates)
 // scenes as shipped (2 cm, 16 and 4 points per cell, nodal stress
 // projection, FLIP's noise relaxed toward XPIC(4), polygon to 1.7 s,
 // ellipse to 2.1 s), from the water surface to the tank floor. The
-// experiment (paper Section 5.2): 0.8 m/s at 0.8 s, on the floor at 1.1 s.
-// Our scenes sink at 0.599 and 0.577 m/s at 0.8 s (the polygon at the
-// 25% band's edge, the ellipse outside it), for the
-// reasons measured in doc/geocontainer_validation.md, section 5. Asserted
-// against our measurement, so that a change of the result shows: the
-// velocity at 0.8 s within 0.05 m/s, the landing time within 0.05 s, the
-// membrane's lowest node at 1.6 s within 1 cm (measured 1.454 and 1.524 s,
-// 2.72 and 2.11 cm, before the cut cells were projected: not yet
-// measured since, and the polygon now loses a water point thrown up at
-// 0.5 s, so this test is expected to fail there until they are), masses to
-// 1e-12, at most 20 water points inside the membrane and none deeper than 15 mm
-// (measured 9 and 7 points, 9.1 and 9.0 mm: contact on grid nodes, 2 cm cells),
-// no point lost, a stable run; and that the water keeps its volume: by the work
-// gravity has done, the water's centre of mass has risen at 0.8 s by the volume
-// the bag displaces plus the share of the surface's waves and of the jet where
-// the water closes over the bag, 0.7-2.1 mm (measured 7.07 against 5.59 mm and
-// 6.41 against 5.09 mm; with the paper's NMD+ANP it fell, doc section 5).
-// About 25 min (polygon) and 35 min (ellipse) on 2 cores.
+// experiment (paper Section 5.2): 0.8 m/s at 0.8 s (its landing time is
+// not given; the paper's simulation lands at 1.1 s).
+// Our scenes sink at 0.580 and 0.592 m/s at 0.8 s (27 and 26% below),
+// for the reasons measured in doc/geocontainer_validation.md, section 5.
+// Asserted against our measurement, so that a change of the result shows:
+// the velocity at 0.8 s within 0.05 m/s, the landing time within 0.05 s,
+// the membrane's lowest node at 1.6 s within 1 cm (measured 1.409 and
+// 1.407 s, 2.67 and 3.63 cm), masses to 1e-12, at most 30 water points
+// inside the membrane and none deeper than 20 mm (measured 25 and 25
+// points, 13.3 and 16.0 mm, after the landing; 8 and 8 points, 6.2 and
+// 5.0 mm, to 0.8 s: contact on grid nodes, 2 cm cells), no point lost (the
+// tank has a lid), a stable run; and that the water keeps its volume: by
+// the work gravity has done, the water's centre of mass has risen at 0.8 s
+// by the volume the bag displaces plus the share of the surface's waves and
+// of the jet where the water closes over the bag (measured 0.76 and 0.61
+// mm above 6.09 and 5.60 mm; with the paper's NMD+ANP it fell, doc section
+// 5). About 28 min (polygon) and 32 min (ellipse) on one thread each.
 TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
 {
   struct Expected
   {
     std::string scene;
-    double      v_08, landing, lowest_16;
+    double      v_08, landing, lowest_16, rise_above_displaced;
   };
   for (const Expected &e :
-       {Expected{"geocontainer_polygon.prm", -0.599, 1.454, 0.0272},
-        Expected{"geocontainer_ellipse.prm", -0.577, 1.524, 0.0211}})
+       {Expected{"geocontainer_polygon.prm", -0.580, 1.409, 0.0267, 0.00076},
+        Expected{"geocontainer_ellipse.prm", -0.592, 1.407, 0.0363, 0.00061}})
     {
       auto prm = test_tools::make_parameters_from_scene(e.scene);
       prm->enter_subsection("Output");
@@ -222,14 +221,14 @@ TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
                 << std::endl;
       EXPECT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
         << e.scene << ": " << sim.get_diagnosis();
-      // Above the displaced volume by the waves' and the jet's share
-      // (measured 1.48 and 1.32 mm).
-      EXPECT_NEAR(water_rise - displaced_rise, 0.0014, 0.0007) << e.scene;
+      // Above the displaced volume by the waves' and the jet's share.
+      EXPECT_NEAR(water_rise - displaced_rise, e.rise_above_displaced, 0.0003)
+        << e.scene;
       EXPECT_EQ(sim.get_monitors().lost_particles, 0u) << e.scene;
       EXPECT_NEAR(v_08, e.v_08, 0.05) << e.scene;
       EXPECT_NEAR(landing, e.landing, 0.05) << e.scene;
       EXPECT_NEAR(lowest_16, e.lowest_16, 0.01) << e.scene;
-      EXPECT_LE(max_inside, 20u) << e.scene;
-      EXPECT_LT(max_depth, 0.015) << e.scene;
+      EXPECT_LE(max_inside, 30u) << e.scene;
+      EXPECT_LT(max_depth, 0.020) << e.scene;
     }
 }
