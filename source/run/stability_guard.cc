@@ -100,9 +100,8 @@ namespace fsgmpm
              + std::to_string(created) + " J, more than "
              + std::to_string(settings.energy_creation_tolerance)
              + " times the energy put in (" + std::to_string(scale)
-             + " J): the step is creating energy (seen with a stiff body "
-               "bouncing off a 'friction' wall; Stability/Energy creation "
-               "tolerance = 0 disables this check)";
+             + " J): the step is creating energy (Stability/Energy "
+               "creation tolerance = 0 disables this check)";
 
     history.push_back({{stored, monitors.external_work}});
     if (history.size() > settings.growth_window + 1)
