@@ -15,7 +15,13 @@ namespace fsgmpm
     {
       // NMD, Eq. (24): nodal volumetric strain rate, averaged over the
       // attached non-empty cells with the volumes of the material's points
-      // as weights (per material), optionally capped per cell.
+      // as weights (per material), optionally capped per cell. The points
+      // flagged at the free surface (by the last step's detection, which
+      // gave them zero pressure) are left out as ANP leaves them out of
+      // Eq. (29): with the same weights in both averages the points' stress
+      // power equals the nodal forces' power. With them in, the rate of a
+      // closing cavity's surface cells compressed the water below without
+      // the work of a force, creating energy.
       bool any_nmd = false;
       for (unsigned int m = 0; m < options.size(); ++m)
         if (options[m].nmd)
@@ -33,7 +39,7 @@ namespace fsgmpm
               particles,
               options,
               c,
-              [](unsigned int) { return true; },
+              [&](const unsigned int p) { return !particles.free_surface[p]; },
               scale);
             // Every point of the cell adds to the same dim + 1 nodes: sum
             // the weights over each run of points of one material first.
@@ -53,7 +59,7 @@ namespace fsgmpm
                  ++p)
               {
                 const unsigned int m = particles.material_id[p];
-                if (!options[m].nmd)
+                if (!options[m].nmd || particles.free_surface[p])
                   continue;
                 if (m != run_material)
                   {
