@@ -15,6 +15,7 @@
 
 #include <fsgmpm/base/version.h>
 #include <fsgmpm/default_scene.h>
+#include <fsgmpm/scene/parameter_file_check.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>
@@ -269,6 +270,11 @@ main(int argc, char **argv)
           AssertThrow(std::filesystem::is_regular_file(prm_file),
                       ExcMessage("Cannot open the parameter file <" + prm_file
                                  + ">."));
+          {
+            // Structure first (typos, a missing end), with what to fix.
+            std::ifstream file(prm_file);
+            fsgmpm::check_parameter_file(prm, file, prm_file);
+          }
           prm.parse_input(prm_file);
         }
       else

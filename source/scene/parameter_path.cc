@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/scene/parameter_file_check.h>
 #include <fsgmpm/scene/parameter_path.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -39,9 +40,16 @@ namespace fsgmpm
     catch (ParameterHandler::ExcEntryUndeclared &)
       {
         leave();
+        std::vector<std::string> paths;
+        for (const auto &[p, value] : parameter_values(prm))
+          paths.push_back(p);
+        const std::string near = nearest_name(path, paths);
         AssertThrow(false,
-                    ExcMessage("--set: there is no parameter <" + path
-                               + ">. Run fsgmpm --print-parameters for the "
+                    ExcMessage("--set: there is no parameter <" + path + ">."
+                               + (near.empty()
+                                    ? std::string()
+                                    : " Did you mean <" + near + ">?")
+                               + " Run fsgmpm --print-parameters for the "
                                  "full list."));
       }
     catch (ExceptionBase &e)

@@ -48,9 +48,47 @@ subsection Simulation
   set End tme = 1
 end
 PRM
-expect_error "unknown parameter in prm" "End tme" unknown.prm
-expect_error "unknown parameter in --set" "no parameter <Simulation/End tme>" --set "Simulation/End tme=1"
-expect_error "unknown subsection in --set" "no parameter <Simulaton/End time>" --set "Simulaton/End time=1"
+expect_error "unknown parameter in prm" "Line 2 of <unknown.prm>: there is no entry <End tme> in subsection <Simulation>. Did you mean <End time>\?" unknown.prm
+expect_error "unknown parameter in --set" "no parameter <Simulation/End tme>. Did you mean <Simulation/End time>\?" --set "Simulation/End tme=1"
+expect_error "unknown subsection in --set" "no parameter <Simulaton/End time>. Did you mean <Simulation/End time>\?" --set "Simulaton/End time=1"
+cat > unknown_subsection.prm <<'PRM'
+subsection Simulaton
+  set End time = 1
+end
+PRM
+expect_error "unknown subsection in prm" "Line 1 of <unknown_subsection.prm>: there is no subsection <Simulaton> at the top level. Did you mean <Simulation>\?" unknown_subsection.prm
+cat > missing_end.prm <<'PRM'
+subsection Simulation
+  set End time = 1
+subsection Grid
+  set Type = box
+end
+PRM
+expect_error "missing end before a subsection" "Line 3 of <missing_end.prm>: there is no subsection <Grid> in subsection <Simulation>. Is the <end> of subsection <Simulation> \(opened at line 1\) missing above it\?" missing_end.prm
+cat > missing_last_end.prm <<'PRM'
+subsection Simulation
+  set End time = 1
+PRM
+expect_error "missing end at the end of the file" "the file ends with subsection <Simulation> still open: the <end> of subsection <Simulation> \(opened at line 1\) is missing" missing_last_end.prm
+cat > extra_end.prm <<'PRM'
+subsection Simulation
+  set End time = 1
+end
+end
+PRM
+expect_error "end without a subsection" "Line 4 of <extra_end.prm>: <end> with no subsection open" extra_end.prm
+cat > wrong_subsection.prm <<'PRM'
+subsection Grid
+  set Courant number = 0.3
+end
+PRM
+expect_error "entry in the wrong subsection" "there is no entry <Courant number> in subsection <Grid>. It is an entry in subsection <Simulation>" wrong_subsection.prm
+cat > no_equals.prm <<'PRM'
+subsection Simulation
+  set End time 1
+end
+PRM
+expect_error "set without =" "Line 2 of <no_equals.prm>: <set End time 1> has no <=>" no_equals.prm
 expect_error "negative density" "Bodies/Body 0/Density|Density" --set "Bodies/Body 0/Density=-1000"
 expect_error "nu = 0.5" "Poisson's ratio" "$2/../prm/elastic_block_drop.prm" --set "Bodies/Body 0/Linear elastic/Poisson's ratio=0.5"
 expect_error "f_c = 1" "Free surface threshold" --set "Bodies/Body 0/Free surface threshold=1"
