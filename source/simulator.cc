@@ -1301,11 +1301,13 @@ namespace fsgmpm
          {"monitor_units", units},
          {"energy_residual",
           json_number(stability_guard.energy_residual(monitors))},
+         // 0 when no energy was put in (no motion, stress or gravity):
+         // summary.json holds no null.
          {"energy_residual_ratio",
           json_number(stability_guard.energy_scale() > 0
                         ? stability_guard.energy_residual(monitors)
                             / stability_guard.energy_scale()
-                        : std::nan(""))},
+                        : 0.)},
          {"bytes_per_particle", json_number(bytes)},
          {"peak_resident_bytes", json_number(peak_resident)},
          {"resident_bytes_per_particle",
