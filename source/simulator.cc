@@ -14,6 +14,7 @@
 #include <fsgmpm/particles/body_filler.h>
 #include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/run/energy_balance.h>
+#include <fsgmpm/run/interruption.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/simulator.h>
 #include <fsgmpm/step/cell_loops.h>
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -896,9 +898,18 @@ namespace fsgmpm
                                             CompensatedSum(free.first),
                                             CompensatedSum(free.second)};
         sums.insert(sums.end(), energies.begin(), energies.end());
+        // A signal on any process stops them all after this step: the
+        // processes' signals ride along in the same collective (SIGTERM
+        // counted 2^20, SIGINT 1, so the sum says which came).
+        const int signal = Interruption::received_signal();
+        sums.emplace_back(signal == SIGTERM ? double(1 << 20)
+                                            : (signal != 0 ? 1. : 0.));
         const std::vector<double> total = sum_over_processes(sums, comm);
+        interrupt_signal                = total.back() >= double(1 << 20)
+                                            ? SIGTERM
+                                            : (total.back() > 0 ? SIGINT : 0);
         EnergyBalance::set_energies(make_array_view(total.cbegin() + 7,
-                                                    total.cend()),
+                                                    total.cend() - 1),
                                     monitors);
         g.external_work_increment = CompensatedSum(total[0]);
         g.damping_work_increment  = CompensatedSum(total[1]);
@@ -954,7 +965,11 @@ namespace fsgmpm
       }
     if (time_step_control.reached_end(time, step))
       {
-        termination = Termination::end_time;
+        // The step limit is reported as such: a run it cut short did not
+        // reach its end time.
+        termination = time_step_control.reached_end_time(time)
+                        ? Termination::end_time
+                        : Termination::max_steps;
         return false;
       }
     return true;
@@ -1028,13 +1043,18 @@ namespace fsgmpm
       columns.push_back("free_surface_fraction");
     for (const auto &name : scene_monitors->names())
       columns.push_back(name);
+    monitor_columns = columns;
+    // The header carries each column's unit: "kinetic_energy[J/m]".
+    std::vector<std::string> headers;
+    for (const auto &column : columns)
+      headers.push_back(monitor_column_header(column, dim));
     if (root)
       monitor_file
         = resumed
             ? std::make_unique<MonitorFile>(dir + "/monitors.csv",
-                                            columns,
+                                            headers,
                                             resume_monitor_bytes)
-            : std::make_unique<MonitorFile>(dir + "/monitors.csv", columns);
+            : std::make_unique<MonitorFile>(dir + "/monitors.csv", headers);
     auto write_monitor_row = [&] {
       // The common columns; the free-surface fraction (the last value)
       // only where a body detects free surfaces.
@@ -1056,6 +1076,7 @@ namespace fsgmpm
       row.insert(row.end(), scene.begin(), scene.end());
       if (root)
         monitor_file->write_row(row);
+      last_monitor_row = row;
     };
     const bool any_output
       = (params.write_particles || params.write_grid || membrane)
@@ -1111,18 +1132,53 @@ namespace fsgmpm
         if (termination == Termination::unstable
             || termination == Termination::error)
           break;
-        if (step % params.monitor_every_steps == 0 || !running)
+        // SIGTERM or SIGINT: stop after this complete step (with MPI
+        // advance() agreed on the signal).
+        if (!partition)
+          interrupt_signal = Interruption::received_signal();
+        const bool stopping         = running && interrupt_signal != 0;
+        auto       write_due_output = [&](const bool last_step) {
+          if (any_output && output_schedule.due(time, step, last_step))
+            {
+              const auto t0 = Clock::now();
+              write_output();
+              run_stage_seconds[output_stage]
+                += std::chrono::duration<double>(Clock::now() - t0).count();
+              output_schedule.written(time, step);
+            }
+        };
+        const bool row_due = step % params.monitor_every_steps == 0;
+        if (row_due || !running)
           write_monitor_row();
-        if (any_output && output_schedule.due(time, step, !running))
+        write_due_output(!running);
+        if (stopping)
           {
-            const auto t0 = Clock::now();
-            write_output();
-            run_stage_seconds[output_stage]
-              += std::chrono::duration<double>(Clock::now() - t0).count();
-            output_schedule.written(time, step);
+            // The checkpoint holds the state as the run would have gone on
+            // from it, before the stop's own row and output: a restart
+            // drops those and continues as the uninterrupted run.
+            if (params.checkpoint_interval > 0)
+              {
+                write_checkpoint(
+                  std::chrono::duration<double>(Clock::now() - start).count());
+                checkpoint_schedule.written(time, step);
+              }
+            running     = false;
+            termination = Termination::interrupted;
+            diagnosis   = std::string("interrupted by ")
+                        + (interrupt_signal == SIGTERM ? "SIGTERM" : "SIGINT")
+                        + " at step " + std::to_string(step)
+                        + ", t = " + format(time) + " s"
+                        + (params.checkpoint_interval > 0
+                             ? "; continue with --restart " + dir
+                             : "; Output/Checkpoint interval > 0 would have "
+                               "written a checkpoint to continue from")
+                        + ".";
+            if (!row_due)
+              write_monitor_row();
+            write_due_output(true);
           }
-        if (checkpoint_schedule.active() && running
-            && checkpoint_schedule.due(time, step))
+        else if (checkpoint_schedule.active() && running
+                 && checkpoint_schedule.due(time, step))
           {
             write_checkpoint(
               std::chrono::duration<double>(Clock::now() - start).count());
@@ -1150,8 +1206,10 @@ namespace fsgmpm
         + previous_wall_seconds;
     // The final state too, so that a finished run can be continued to a
     // later End time.
+    // (An interrupted run wrote its checkpoint at the stop.)
     if (params.checkpoint_interval > 0 && termination != Termination::unstable
-        && termination != Termination::error)
+        && termination != Termination::error
+        && termination != Termination::interrupted)
       write_checkpoint(wall - previous_wall_seconds);
     monitor_file.reset();
     if (membrane && root)
@@ -1168,7 +1226,8 @@ namespace fsgmpm
       }
     if (root
         && (termination == Termination::unstable
-            || termination == Termination::error))
+            || termination == Termination::error
+            || termination == Termination::interrupted))
       std::cerr << "fsgmpm: " << diagnosis << std::endl;
     return termination;
   }
@@ -1205,6 +1264,20 @@ namespace fsgmpm
       stages += (s ? ", " : "") + json_string(stage_names()[s]) + ": "
                 + json_number(seconds[s]);
     stages += "}";
+    // The last row of monitors.csv by column, and the columns' units.
+    std::string final_monitors = "{", units = "{";
+    for (unsigned int c = 0; c < monitor_columns.size(); ++c)
+      {
+        const std::string &column = monitor_columns[c];
+        final_monitors
+          += (c ? ", " : "") + json_string(column) + ": "
+             + json_number(c < last_monitor_row.size() ? last_monitor_row[c]
+                                                       : std::nan(""));
+        units += (c ? ", " : "") + json_string(column) + ": "
+                 + json_string(monitor_column_unit(column, dim));
+      }
+    final_monitors += "}";
+    units += "}";
     std::vector<std::pair<std::string, std::string>> entries
       = {{"dim", std::to_string(dim)},
          {"particles", std::to_string(n_points)},
@@ -1221,8 +1294,20 @@ namespace fsgmpm
          {"lost_particles", std::to_string(monitors.lost_particles)},
          {"dt_min", json_number(time_step_control.dt_min())},
          {"dt_max", json_number(time_step_control.dt_max())},
+         {"dt_last", json_number(time_step_control.dt())},
          {"termination", json_string(to_string(termination))},
          {"diagnosis", json_string(diagnosis)},
+         {"final_monitors", final_monitors},
+         {"monitor_units", units},
+         {"energy_residual",
+          json_number(stability_guard.energy_residual(monitors))},
+         // 0 when no energy was put in (no motion, stress or gravity):
+         // summary.json holds no null.
+         {"energy_residual_ratio",
+          json_number(stability_guard.energy_scale() > 0
+                        ? stability_guard.energy_residual(monitors)
+                            / stability_guard.energy_scale()
+                        : 0.)},
          {"bytes_per_particle", json_number(bytes)},
          {"peak_resident_bytes", json_number(peak_resident)},
          {"resident_bytes_per_particle",

@@ -22,7 +22,6 @@ steady coefficient from the start) and the walls.
 With RUN (a run's output directory with monitors.csv) it prints the run's
 velocity beside the balance's at the same times.
 """
-import csv
 import math
 import os
 import sys
@@ -30,6 +29,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 from added_mass import (AREA, CIRCUMFERENCE, POLYGON,  # noqa: E402
                         ellipse_axes, polygon_area)
 from release_acceleration import section_added_mass  # noqa: E402
@@ -62,7 +62,7 @@ def main():
     run = None
     if len(sys.argv) == 3:
         with open(os.path.join(sys.argv[2], "monitors.csv")) as f:
-            rows = list(csv.DictReader(f))
+            rows = list(monitors_csv.DictReader(f))
         t = np.array([float(r["time"]) for r in rows])
         v = -np.array([float(r["container_velocity_y"]) for r in rows])
         run = (t, v)

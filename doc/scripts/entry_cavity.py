@@ -20,7 +20,6 @@ forces, (m + m_a) dv/dt = (m - rho V) g - rho g A - rho C_d W v^2 / 2
 doc/scripts/drag_balance.py), dv/dt of the run by central differences of
 container_velocity_y over +-0.05 s.
 """
-import csv
 import os
 import re
 import sys
@@ -28,6 +27,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 from drag_balance import balance  # noqa: E402
 from read_vtu import read_vtu  # noqa: E402
 
@@ -57,7 +57,7 @@ def main():
     # The section's width and added mass (one panel solve).
     width, _, m_a, _ = balance(shape)
     with open(os.path.join(run, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     t = np.array([float(r["time"]) for r in rows])
     v = -np.array([float(r["container_velocity_y"]) for r in rows])
     xc = np.array([float(r["container_centre_x"]) for r in rows])

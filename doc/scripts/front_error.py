@@ -21,6 +21,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REFERENCE = os.path.join(HERE, "..", "..", "tests", "reference")
 
@@ -80,7 +83,7 @@ def main(argv):
         path = os.path.join(run, "monitors.csv")
         try:
             with open(path) as f:
-                rows = list(csv.DictReader(f))
+                rows = list(monitors_csv.DictReader(f))
             front = [(float(r["time"]) * scale,
                       float(r["front_position"]) / width) for r in rows]
         except (OSError, KeyError, ValueError) as e:

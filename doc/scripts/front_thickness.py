@@ -16,7 +16,6 @@ T = 2-3.2 (a straight-line fit) and, for an n^2 = 2 column, the RMS
 against Martin & Moyce's tabulated front (T <= 3.3) without shift and
 after the best delay (front_error.py's measures).
 """
-import csv
 import math
 import os
 import re
@@ -25,6 +24,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 from front_error import read_reference, rms  # noqa: E402
 from read_vtu import read_vtu  # noqa: E402
 
@@ -64,7 +64,7 @@ def main(argv):
     for run in argv:
         t, by_thickness = fronts(run, width, thicknesses)
         with open(os.path.join(run, "monitors.csv")) as f:
-            rows = list(csv.DictReader(f))
+            rows = list(monitors_csv.DictReader(f))
         tm = np.array([float(r["time"]) for r in rows])
         zm = np.array([float(r["front_position"]) for r in rows])
         series = {"monitor": np.interp(t, tm, zm)}

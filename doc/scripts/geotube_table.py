@@ -9,10 +9,13 @@ the analytic solution for the nominal circumference 9.2 m and area and for
 the run's measured enclosed area and membrane length. The wall time and the
 step count come from the run's summary.json. Debian's python3 only.
 """
-import csv
 import json
 import subprocess
 import sys
+import os
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 
 
 def analytic(exe, length, area):
@@ -32,7 +35,8 @@ def main():
     for run in runs:
         area, cell, directory = run.split(":", 2)
         with open(directory + "/monitors.csv") as f:
-            rows = [r for r in csv.DictReader(f) if float(r["time"]) >= t0]
+            rows = [r for r in monitors_csv.DictReader(f)
+                    if float(r["time"]) >= t0]
         # An empty field is an undefined Eq. (30) ratio (no external work).
         rows = [{k: float(v) if v else float("inf") for k, v in r.items()}
                 for r in rows]

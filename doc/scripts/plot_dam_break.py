@@ -20,6 +20,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
+
 
 def read_reference(path):
     series = {"front": [], "height": []}
@@ -32,7 +35,7 @@ def read_reference(path):
 
 def read_monitors(run_dir):
     with open(os.path.join(run_dir, "monitors.csv")) as f:
-        reader = csv.DictReader(f)
+        reader = monitors_csv.DictReader(f)
         data = {k: [] for k in reader.fieldnames}
         for row in reader:
             for k in reader.fieldnames:

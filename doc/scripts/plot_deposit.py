@@ -12,13 +12,13 @@ dashed. Prints the run-out (monitor runout, last row of monitors.csv) and
 python3-numpy.
 """
 import argparse
-import csv
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 from read_vtu import particle_files, read_vtu  # noqa: E402
 
 
@@ -35,7 +35,7 @@ def surface(path, bin_width):
 
 def last_runout(run_dir):
     with open(os.path.join(run_dir, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     return float(rows[-1]["runout"]) if rows and "runout" in rows[-1] \
         else float("nan")
 

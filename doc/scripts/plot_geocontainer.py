@@ -9,13 +9,16 @@ experiment as the paper reports it (accelerating until 0.4 s, 0.8 m/s at
 V = sqrt(2 g A (rho_s - rho_w)/(rho_w C_d b)) for C_d = 1 and 2.
 Uses Debian's python3-matplotlib.
 """
-import csv
 import math
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import os
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 
 out = sys.argv[1]
 fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -23,7 +26,7 @@ for item in sys.argv[2:]:
     label, path = item.split("=", 1)
     t, v = [], []
     with open(path) as f:
-        for row in csv.DictReader(f):
+        for row in monitors_csv.DictReader(f):
             t.append(float(row["time"]))
             v.append(-float(row["container_velocity_y"]))
     ax.plot(t, v, label=label)

@@ -17,6 +17,10 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import os
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 
 
 def analytic(exe, length, area):
@@ -36,7 +40,7 @@ def main():
         with open(directory + "/membrane_shape.csv") as f:
             xy = [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
         with open(directory + "/monitors.csv") as f:
-            last = list(csv.DictReader(f))[-1]
+            last = list(monitors_csv.DictReader(f))[-1]
         xc = 0.5 * (min(p[0] for p in xy) + max(p[0] for p in xy))
         x = [p[0] - xc for p in xy] + [xy[0][0] - xc]
         y = [p[1] for p in xy] + [xy[0][1]]

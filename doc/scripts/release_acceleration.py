@@ -16,13 +16,13 @@ The reference is the potential-flow added mass of the section
 the run's own sand mass (body_mass_0) and enclosed area, the textile's
 0.3 kg/m^2 over 0.62 m. The last line gives both fits' errors against it.
 """
-import csv
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 from added_mass import (AREA, CIRCUMFERENCE, POLYGON, added_mass,  # noqa: E402
                         ellipse, ellipse_axes, refine)
 
@@ -36,7 +36,7 @@ def section_added_mass(shape, rho=1000.):
 
 def measured(run, T=0.12):
     with open(os.path.join(run, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     t = np.array([float(r["time"]) for r in rows])
     v = -np.array([float(r["container_velocity_y"]) for r in rows])
     y = np.array([float(r["container_centre_y"]) for r in rows])

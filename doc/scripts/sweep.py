@@ -33,6 +33,9 @@ G = 9.81
 # The reference data and the interpolation of doc/scripts/front_error.py.
 from front_error import interpolate, read_reference  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
+
 
 def variants(base, runs):
     """add(name, Section__Sub__Name_with_spaces=value, ...): a run with the
@@ -82,7 +85,7 @@ def dam_break_result(run_dir, source):
     a = 0.114
     scale = math.sqrt(2 * G / a)
     with open(os.path.join(run_dir, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     front = [(float(r["time"]) * scale, float(r["front_position"]) / a)
              for r in rows]
     mm = read_reference("martin_moyce_1952_n2.csv")["front"]
@@ -137,7 +140,7 @@ def granular_result(run_dir, source):
     """The run-out (m) and its relative error against Lube et al. (2005):
     (L - L0)/L0 = 1.9 a^(2/3) for a > 2.8."""
     with open(os.path.join(run_dir, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     runout = float(rows[-1]["runout"])
     L0 = 0.2
     lube = 1.9 * ASPECT ** (2 / 3) if ASPECT > 2.8 else 1.2 * ASPECT
@@ -198,7 +201,7 @@ def geotube_result(run_dir, source):
     their relative errors against the analytic solution for the nominal
     circumference 9.2 m and area 5.56 m^2 (the user's error)."""
     with open(os.path.join(run_dir, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     t_end = float(rows[-1]["time"])
     rows = [r for r in rows if float(r["time"]) >= 0.75 * t_end]
     hw = sum(float(r["height"]) / float(r["width"]) for r in rows) / len(rows)
@@ -267,7 +270,7 @@ def geocontainer_velocity(run_dir):
     """The sand's downward centre-of-mass velocity v(t) (m/s)."""
     with open(os.path.join(run_dir, "monitors.csv")) as f:
         return [(float(r["time"]), -float(r["container_velocity_y"]))
-                for r in csv.DictReader(f)]
+                for r in monitors_csv.DictReader(f)]
 
 
 def geocontainer_result(run_dir, source):
@@ -307,7 +310,7 @@ SCENES = {
 
 # A run that ended by one of these is a result; "unstable" is one too (past
 # the stable limit), any other exit a failure.
-FINISHED = ("end_time", "at_rest", "dr_converged")
+FINISHED = ("end_time", "max_steps", "at_rest", "dr_converged")
 
 
 def main(argv):

@@ -16,7 +16,6 @@ body BODY's points in tension (pressure below -1 Pa), the lowest point
 pressure, and the same for projected_pressure (the projected nodal stress,
 the field the grid integrates), and the share flagged as free surface.
 """
-import csv
 import math
 import os
 import sys
@@ -24,12 +23,13 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import monitors_csv  # noqa: E402
 from read_vtu import particle_files, read_vtu  # noqa: E402
 
 
 def front(run, a=0.114, g=9.81):
     with open(os.path.join(run, "monitors.csv")) as f:
-        rows = list(csv.DictReader(f))
+        rows = list(monitors_csv.DictReader(f))
     t = np.array([float(r["time"]) for r in rows])
     z = np.array([float(r["front_position"]) for r in rows])
     return t * math.sqrt(2 * g / a), z / a

@@ -170,7 +170,15 @@ namespace fsgmpm
     {
       return termination;
     }
-    /// Diagnosis when the termination is unstable or error.
+    /// The signal (SIGTERM or SIGINT) that interrupted the run (termination
+    /// interrupted), or 0.
+    int
+    get_interrupt_signal() const
+    {
+      return interrupt_signal;
+    }
+    /// Diagnosis when the termination is unstable or error, what stopped
+    /// the run when it was interrupted.
     const std::string &
     get_diagnosis() const
     {
@@ -345,7 +353,11 @@ namespace fsgmpm
     DynamicRelaxation relaxation;
     Termination       termination = Termination::running;
     std::string       diagnosis;
-    StabilityGuard    stability_guard;
+    /// Interruption::received_signal() as the processes agreed on it in
+    /// the last step (MPI: the strongest of their signals, SIGTERM over
+    /// SIGINT), or 0.
+    int            interrupt_signal = 0;
+    StabilityGuard stability_guard;
 
     std::unique_ptr<MpmStep<dim>> mpm_step;
     /// MPI runs with more than one process: who owns which cell (null in
@@ -367,8 +379,12 @@ namespace fsgmpm
     double       halo_fraction = 0, imbalance = 1;
     /// Wall seconds of the run-control stages, and of all stages before a
     /// restart (from the checkpoint).
-    std::vector<double>             run_stage_seconds, restored_stage_seconds;
-    std::unique_ptr<MonitorFile>    monitor_file;
+    std::vector<double>          run_stage_seconds, restored_stage_seconds;
+    std::unique_ptr<MonitorFile> monitor_file;
+    /// The columns of monitors.csv (without their units) and the last row
+    /// written, for summary.json.
+    std::vector<std::string>        monitor_columns;
+    std::vector<double>             last_monitor_row;
     std::unique_ptr<RunOutput<dim>> output;
     OutputSchedule                  output_schedule, checkpoint_schedule;
     unsigned long long              particle_updates = 0;

@@ -15,6 +15,7 @@
 
 #include <fsgmpm/base/version.h>
 #include <fsgmpm/default_scene.h>
+#include <fsgmpm/run/interruption.h>
 #include <fsgmpm/scene/parameter_file_check.h>
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>
@@ -60,8 +61,10 @@ namespace
       "  --help                   this text\n"
       "  --version                print the version\n"
       "\n"
-      "Exit status: 0 finished (end time or converged), 1 bad input or error,\n"
-      "3 the run became unstable (see the diagnosis and summary.json).\n";
+      "Exit status: 0 finished (end time, step limit, at rest or converged),\n"
+      "1 bad input or error, 3 the run became unstable (see the diagnosis and\n"
+      "summary.json), 130 or 143 stopped by SIGINT or SIGTERM after its step\n"
+      "(a checkpoint written where enabled; termination interrupted).\n";
 
   /// Apply one --set override; errors name the full path.
   void
@@ -161,7 +164,13 @@ namespace
     // After the scene has been validated and built: nothing is written for
     // a run that cannot start.
     write_run_input(prm, command);
+    // From here on SIGTERM and SIGINT stop the run after its step, with
+    // its checkpoint and summary.json written.
+    fsgmpm::Interruption::install_handlers();
     const fsgmpm::Termination termination = simulator.run();
+    if (termination == fsgmpm::Termination::interrupted)
+      return fsgmpm::Interruption::exit_status(
+        simulator.get_interrupt_signal());
     return termination == fsgmpm::Termination::unstable
              ? 3
              : (termination == fsgmpm::Termination::error ? 1 : 0);

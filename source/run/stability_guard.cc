@@ -88,10 +88,8 @@ namespace fsgmpm
     external_work_scale
       = std::max(external_work_scale, std::abs(monitors.external_work));
     const double stored  = monitors.kinetic_energy + monitors.strain_energy;
-    const double created = stored
-                           - (initial_energy + monitors.external_work
-                              - monitors.dissipated_energy);
-    const double scale = initial_energy + external_work_scale;
+    const double created = energy_residual(monitors);
+    const double scale   = energy_scale();
     if (settings.energy_creation_tolerance > 0 && scale > 0
         && created > settings.energy_creation_tolerance * scale)
       return "the kinetic plus strain energy (" + std::to_string(stored)
@@ -121,6 +119,16 @@ namespace fsgmpm
                  + " steps earlier plus the external work since";
       }
     return "";
+  }
+
+
+
+  double
+  StabilityGuard::energy_residual(const Monitors &monitors) const
+  {
+    return monitors.kinetic_energy + monitors.strain_energy
+           - (initial_energy + monitors.external_work
+              - monitors.dissipated_energy);
   }
 
 

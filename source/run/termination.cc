@@ -11,6 +11,8 @@ namespace fsgmpm
           return "running";
         case Termination::end_time:
           return "end_time";
+        case Termination::max_steps:
+          return "max_steps";
         case Termination::at_rest:
           return "at_rest";
         case Termination::dr_converged:
@@ -19,6 +21,8 @@ namespace fsgmpm
           return "unstable";
         case Termination::error:
           return "error";
+        case Termination::interrupted:
+          return "interrupted";
       }
     return "unknown";
   }

@@ -67,8 +67,16 @@ namespace fsgmpm
   TimeStepControl::reached_end(const double time, const unsigned int step) const
   {
     // choose() lands the last step on the end time up to round-off.
-    return time >= settings.end_time * (1 - 1e-14)
+    return reached_end_time(time)
            || (settings.max_steps > 0 && step >= settings.max_steps);
+  }
+
+
+
+  bool
+  TimeStepControl::reached_end_time(const double time) const
+  {
+    return time >= settings.end_time * (1 - 1e-14);
   }
 
 
@@ -90,12 +98,14 @@ namespace fsgmpm
                  + std::to_string(step)
                  + "; use a smaller fixed time step or 0 (automatic).";
       }
-    if (settings.end_time - time < dt)
+    const bool cut = settings.end_time - time < dt;
+    if (cut)
       dt = settings.end_time - time;
     if (!(dt > 0) || !std::isfinite(dt))
       return "the time step became " + format(dt) + " s at step "
              + std::to_string(step) + ".";
-    current = dt;
+    current   = dt;
+    shortened = cut;
     return "";
   }
 
@@ -104,8 +114,13 @@ namespace fsgmpm
   void
   TimeStepControl::record_step(const unsigned int step)
   {
-    smallest = (step == 1) ? current : std::min(smallest, current);
-    largest  = std::max(largest, current);
+    // A step shortened to land on the end time says nothing about the
+    // stability limit: dt_min() leaves it out (0: no other step yet).
+    if (step == 1)
+      smallest = 0;
+    if (!shortened)
+      smallest = (smallest == 0) ? current : std::min(smallest, current);
+    largest = std::max(largest, current);
   }
 
 

@@ -12,13 +12,17 @@ exceeds R (default 1e-9), or if the columns or rows differ.
 """
 import csv
 import math
+import re
 import sys
 
 
 def read(path):
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
-    header, data = rows[0], rows[1:]
+    # The header names carry units ("time[s]"): compared without them, so
+    # that references written before the units still compare.
+    header = [re.sub(r"\[[^\]]*\]$", "", name) for name in rows[0]]
+    data = rows[1:]
     return {name: [float(r[i]) for r in data] for i, name in enumerate(header)}, header
 
 

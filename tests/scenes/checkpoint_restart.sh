@@ -195,8 +195,10 @@ sys.exit(0 if len(rows) == 3 and 0 in rows and sum(rows) > 0 else 1)
 PY
 }
 check "MPI: a process without points wrote no rows of the checkpoint" has_empty_rows few.3
+check "a run stopped by its step limit says so" grep -q '"termination": "max_steps"' few.3/summary.json
 mpi_launch 3 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" --restart few.3 >/dev/null
 check "MPI: ... and the run continues on 3 processes byte for byte" cmp -s few.full/monitors.csv few.3/monitors.csv
+check "MPI: ... and, continued to a larger step limit, stops at it" grep -q '"termination": "max_steps"' few.3/summary.json
 mpi_launch 2 "$exe" "${few[@]}" --set "Simulation/Maximum number of steps=400" --restart few.2 >/dev/null
 check "MPI: ... and on 2 processes" same_monitors few.full few.2
 

@@ -58,7 +58,7 @@ end
   Simulator<2> sim(*prm);
   while (sim.advance())
     {}
-  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::end_time)
+  ASSERT_EQ(sim.get_termination(), fsgmpm::Termination::max_steps)
     << sim.get_diagnosis();
   EXPECT_EQ(sim.get_step(), 1000u);
   const auto                                   &ps = sim.get_particles();

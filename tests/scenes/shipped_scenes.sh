@@ -8,7 +8,7 @@
 # Courant number and every other parameter as shipped; only the output
 # directory and the VTU output (kept, but every 500 steps) are changed. Validation run (mode
 # "full"): each scene runs to its own End time.
-# Asserts for each scene: exit status 0, termination end_time, dr_converged
+# Asserts for each scene: exit status 0, termination end_time, max_steps (short mode), dr_converged
 # or at_rest in summary.json, finite values in every monitors.csv row
 # (no nan/inf), no lost points (lost_particles 0), no leftover temporary
 # file. Prints the wall time of each run.
@@ -51,7 +51,7 @@ for prm in "$src"/prm/*.prm; do
   why=""
   if [ $status -ne 0 ]; then
     why="exit status $status: $(tail -n 2 "$work/$name.log" | tr '\n' ' ')"
-  elif ! grep -Eq '"termination": "(end_time|dr_converged|at_rest)"' "$out/summary.json"; then
+  elif ! grep -Eq '"termination": "(end_time|max_steps|dr_converged|at_rest)"' "$out/summary.json"; then
     why="termination: $(grep termination "$out/summary.json")"
   elif ! grep -q '"lost_particles": 0' "$out/summary.json"; then
     why="lost points: $(grep lost_particles "$out/summary.json")"

@@ -1,7 +1,9 @@
 // The run-control pieces of a Simulator, each used alone (issue 16):
 // - TimeStepControl: the automatic step is the stages' stable step; a fixed
 //   step is taken when stable and refused, naming the parameter, when not;
-//   the last step lands on the end time exactly; dt_min and dt_max.
+//   the last step lands on the end time exactly; dt_min (the steps as
+//   chosen, not the last one cut to the end time) and dt_max; the step
+//   limit told apart from the end time.
 // - OutputSchedule: output at the first step at or past each multiple of
 //   the interval (steps of 0.03 s, interval 0.1 s: after 0.12, 0.21, 0.3
 //   s), never twice in a step; an interval below the round-off of the time
@@ -36,6 +38,7 @@
 #include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/energy_balance.h>
 #include <fsgmpm/run/output_schedule.h>
+#include <fsgmpm/run/termination.h>
 #include <fsgmpm/run/time_step_control.h>
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
@@ -63,16 +66,33 @@ TEST(TimeStepControl, AutomaticFixedAndEndTime)
   EXPECT_EQ(automatic.choose(0.4, 0.9, 2), "");
   EXPECT_DOUBLE_EQ(automatic.dt(), 0.1);
   automatic.record_step(3);
-  EXPECT_DOUBLE_EQ(automatic.dt_min(), 0.1);
+  // dt_min: the smallest step the stability limit chose (0.2); the last
+  // step, cut to 0.1 to land on the end time, does not count.
+  EXPECT_DOUBLE_EQ(automatic.dt_min(), 0.2);
   EXPECT_EQ(automatic.dt_max(), 0.3);
+  EXPECT_DOUBLE_EQ(automatic.dt(), 0.1);
   // The end: at 0.9 + 0.1 (round-off below 1 included), not at 0.9.
   EXPECT_FALSE(automatic.reached_end(0.9, 2));
   EXPECT_TRUE(automatic.reached_end(0.9 + 0.1, 3));
   EXPECT_TRUE(automatic.reached_end(1. - 1e-15, 3));
-  // A largest number of steps.
+  EXPECT_TRUE(automatic.reached_end_time(1. - 1e-15));
+  // A largest number of steps: reached_end(), but not the end time (the
+  // run reports max_steps).
   TimeStepControl::Settings limited{0.5, 0., 1., 3};
   EXPECT_FALSE(TimeStepControl(limited).reached_end(0.5, 2));
   EXPECT_TRUE(TimeStepControl(limited).reached_end(0.5, 3));
+  EXPECT_FALSE(TimeStepControl(limited).reached_end_time(0.5));
+  EXPECT_TRUE(TimeStepControl(limited).reached_end_time(1.));
+  EXPECT_EQ(to_string(Termination::max_steps), "max_steps");
+  EXPECT_TRUE(finished_normally(Termination::max_steps));
+  EXPECT_EQ(to_string(Termination::interrupted), "interrupted");
+  EXPECT_FALSE(finished_normally(Termination::interrupted));
+  // A single step cut to the end time: dt_min is that step.
+  TimeStepControl single({0.5, 0., 0.05});
+  EXPECT_EQ(single.choose(0.3, 0., 0), "");
+  single.record_step(1);
+  EXPECT_DOUBLE_EQ(single.dt(), 0.05);
+  EXPECT_DOUBLE_EQ(single.dt_min(), 0.05);
 
   // A fixed step within the limit dt_stable / Courant (0.6 here).
   TimeStepControl fixed({0.5, 0.5, 1.});

@@ -55,6 +55,22 @@ namespace fsgmpm
     std::string
     check(const Monitors &monitors, const double displacement_ratio);
 
+    /// The energy balance's residual for @p monitors: kinetic plus strain
+    /// energy less the initial energy plus the external work minus the
+    /// damping work (J, per metre of thickness in 2D). Positive: the step
+    /// created energy; negative: plastic, viscous and transfer
+    /// dissipation, which no monitor books, removed it.
+    double
+    energy_residual(const Monitors &monitors) const;
+
+    /// The energy put in, that the residual is measured against: the
+    /// initial energy plus the largest |external work| so far.
+    double
+    energy_scale() const
+    {
+      return initial_energy + external_work_scale;
+    }
+
     /// The bookkeeping, for a checkpoint, and its restoration.
     std::vector<double>
     state() const;

@@ -11,8 +11,11 @@ namespace fsgmpm
   {
     /// Still running (or not started).
     running,
-    /// Simulation/End time or Maximum number of steps reached (exit 0).
+    /// Simulation/End time reached (exit 0).
     end_time,
+    /// Simulation/Maximum number of steps reached before the end time
+    /// (exit 0).
+    max_steps,
     /// Termination = at_rest: the grid's kinetic energy stayed below
     /// Rest tolerance x the initial potential energy (exit 0).
     at_rest,
@@ -23,18 +26,23 @@ namespace fsgmpm
     unstable,
     /// The run cannot go on: no point left, a membrane node out of the
     /// mesh (exit 1).
-    error
+    error,
+    /// SIGTERM or SIGINT: the run finished its step, wrote a checkpoint
+    /// (where enabled) and its summary, and stopped (exit 130 for SIGINT,
+    /// 143 for SIGTERM, as a shell reports a process killed by them).
+    interrupted
   };
 
   /// The name written to summary.json: "end_time", "unstable", ...
   std::string
   to_string(const Termination termination);
 
-  /// A run that ended as asked (end time, at rest, converged).
+  /// A run that ended as asked (end time, step limit, at rest, converged).
   inline bool
   finished_normally(const Termination termination)
   {
     return termination == Termination::end_time
+           || termination == Termination::max_steps
            || termination == Termination::at_rest
            || termination == Termination::dr_converged;
   }

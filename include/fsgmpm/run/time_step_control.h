@@ -14,7 +14,10 @@ namespace fsgmpm
    * number), or Simulation/Fixed time step if one is set and stable, cut so
    * that the run lands on Simulation/End time. Keeps the current step and
    * its extremes (summary.json dt_min, dt_max), and says when the run has
-   * reached its end time or its largest number of steps.
+   * reached its end time or its largest number of steps. dt_min() is the
+   * smallest step the stability limit (or the fixed step) chose: the last
+   * step, shortened to land on the end time, does not count, since it
+   * says nothing about the run's stability (dt() is that step).
    */
   class TimeStepControl
   {
@@ -52,6 +55,11 @@ namespace fsgmpm
     bool
     reached_end(const double time, const unsigned int step) const;
 
+    /// Whether a run at @p time has reached Simulation/End time (so a run
+    /// that reached_end() and not this stopped at its step limit).
+    bool
+    reached_end_time(const double time) const;
+
     /// The chosen step was taken, and it was the run's step number @p step
     /// (1 for the first): keeps dt_min() and dt_max().
     void
@@ -62,10 +70,12 @@ namespace fsgmpm
     {
       return current;
     }
+    /// The smallest step taken, leaving out a last step shortened to land
+    /// on the end time (unless it was the only one).
     double
     dt_min() const
     {
-      return smallest;
+      return smallest > 0 ? smallest : current;
     }
     double
     dt_max() const
@@ -82,6 +92,8 @@ namespace fsgmpm
   private:
     Settings settings;
     double   current = 0, smallest = 0, largest = 0;
+    /// Whether the current step was shortened to land on the end time.
+    bool shortened = false;
   };
 } // namespace fsgmpm
 
