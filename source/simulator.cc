@@ -670,6 +670,28 @@ namespace fsgmpm
           for (unsigned int c = 0; c < grid->n_base_cells(); ++c)
             (*points_per_cell)[grid->cell_in_field(c, body.velocity_field)]
               += per_base_cell[c];
+        if (points_per_cell)
+          {
+            // A body a few cells across moves and deforms as a few points:
+            // say so (once, on the counting pass) rather than let a
+            // coarse grid pass for a result.
+            unsigned int n_cells = 0, n_points = 0;
+            for (const unsigned int n : per_base_cell)
+              {
+                n_cells += (n > 0);
+                n_points += n;
+              }
+            // 8 squares (16 triangles) in 2D, 8 cubes (48 tetrahedra) in 3D.
+            const unsigned int few_cells = dim == 2 ? 16 : 48;
+            if (n_points > 0 && n_cells < few_cells)
+              std::cerr << "fsgmpm: warning: Bodies/Body " << b
+                        << " is resolved by only " << n_points << " points in "
+                        << n_cells << " cells (fewer than " << few_cells
+                        << "): it will move and deform as a few points. "
+                           "Refine Grid/Cell size (or Grid/Subdivisions) "
+                           "for a body of this size."
+                        << std::endl;
+          }
         if (points_per_cell && first_ids)
           {
             // Ids run body by body, cell by cell (fill_body()).

@@ -6,7 +6,8 @@
 #    above it stops with termination "unstable", exit status 3, a diagnosis,
 #    and no NaN in monitors.csv or the VTU files;
 #  - USL on a falling block (small-mass nodes) is detected as unstable the
-#    same way, never producing NaN output.
+#    same way, never producing NaN output;
+#  - a body resolved by a few cells gets a warning.
 # Usage: run_guards.sh <fsgmpm> <source dir>
 set -u
 exe=$1
@@ -52,6 +53,13 @@ check "no NaN in USL monitors" no_nan usl
 # The stability check runs before any output of a step, so the VTU files
 # written before the stop hold finite fields.
 check "no half-written files" bash -c '! ls usl/*.tmp.* 2>/dev/null'
+
+# A body a few cells across is warned about (the default scene's 0.114 m
+# column at Cell size 0.5 is 2 points in 1 cell); the block as shipped is
+# not.
+"$exe" --set "Grid/Cell size=0.5" --set "Simulation/End time=0.01" --set "Output/Quiet=true" --set "Output/Directory=coarse" 2>coarse.err
+check "a body in a few cells is warned about" grep -q "warning: Bodies/Body 0 is resolved by only 2 points in 1 cells" coarse.err
+check "the shipped block is not" bash -c '! grep -q "warning: Bodies" usl.err'
 
 echo "run guards: $passed passed, $failed failed"
 [ $failed -eq 0 ]
