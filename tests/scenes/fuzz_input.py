@@ -539,7 +539,10 @@ def run_case(case, exe, server, scenes, work, timeout):
         if CRASH_PATTERNS.search(msg):
             return case, status, "crash message: %s" % msg.strip()[-300:], wall
         if status == 1:
-            err = err.strip()
+            # Warnings (e.g. a body in a few cells) may come first.
+            err = "\n".join(
+                line for line in err.strip().splitlines()
+                if not line.startswith("fsgmpm: warning:")).strip()
             if not err.startswith("fsgmpm: error:"):
                 return case, status, "no error message: " + msg[-300:], wall
             name = re.escape(path.split("/")[-1])
