@@ -368,7 +368,7 @@ namespace fsgmpm
     if (partition)
       potential = Utilities::MPI::sum(potential, partition->get_communicator());
     relaxation.reset(monitors, potential);
-    stability_guard.reset(monitors);
+    stability_guard.reset(monitors, potential);
   }
 
 
@@ -918,7 +918,10 @@ namespace fsgmpm
                                             g.external_norm_sq,
                                             CompensatedSum(particles.size()),
                                             CompensatedSum(free.first),
-                                            CompensatedSum(free.second)};
+                                            CompensatedSum(free.second),
+                                            result.material_dissipation,
+                                            result.numerical_dissipation,
+                                            result.outflow_energy};
         sums.insert(sums.end(), energies.begin(), energies.end());
         // A signal on any process stops them all after this step: the
         // processes' signals ride along in the same collective (SIGTERM
@@ -930,7 +933,7 @@ namespace fsgmpm
         interrupt_signal                = total.back() >= double(1 << 20)
                                             ? SIGTERM
                                             : (total.back() > 0 ? SIGINT : 0);
-        EnergyBalance::set_energies(make_array_view(total.cbegin() + 7,
+        EnergyBalance::set_energies(make_array_view(total.cbegin() + 10,
                                                     total.cend() - 1),
                                     monitors);
         g.external_work_increment = CompensatedSum(total[0]);
@@ -940,6 +943,9 @@ namespace fsgmpm
         result.lost_particles = n_before - static_cast<unsigned int>(total[4]);
         result.free_surface   = {static_cast<unsigned int>(total[5]),
                                  static_cast<unsigned int>(total[6])};
+        result.material_dissipation  = CompensatedSum(total[7]);
+        result.numerical_dissipation = CompensatedSum(total[8]);
+        result.outflow_energy        = CompensatedSum(total[9]);
       }
     set_free_surface_fraction(result.free_surface);
     if (result.membrane_nodes_outside > 0)
@@ -968,7 +974,12 @@ namespace fsgmpm
           EnergyBalance::set_energies(make_array_view(std::as_const(totals)),
                                       monitors);
         }
-      EnergyBalance::add_step(result.grid, result.lost_particles, monitors);
+      EnergyBalance::add_step(result.grid,
+                              {result.material_dissipation.value(),
+                               result.numerical_dissipation.value(),
+                               result.outflow_energy.value()},
+                              result.lost_particles,
+                              monitors);
     });
     timed(kinetic_damping_stage, [&] {
       relaxation.apply_kinetic_damping(monitors, particles, membrane.get());
@@ -1060,7 +1071,10 @@ namespace fsgmpm
                                         "dr_energy_ratio",
                                         "dr_force_ratio",
                                         "lost_particles",
-                                        "grid_kinetic_energy"};
+                                        "grid_kinetic_energy",
+                                        "material_dissipation",
+                                        "numerical_dissipation",
+                                        "outflow_energy"};
     if (detecting)
       columns.push_back("free_surface_fraction");
     for (const auto &name : scene_monitors->names())

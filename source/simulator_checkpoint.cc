@@ -266,7 +266,13 @@ namespace fsgmpm
     step          = in.uints("run/step").at(0);
     const auto &m = in.doubles("run/monitors");
     AssertThrow(m.size() == Monitors::n_values,
-                ExcMessage("The checkpoint's monitors are damaged."));
+                ExcMessage("The checkpoint holds " + std::to_string(m.size())
+                           + " monitor values where this version of fsgmpm "
+                             "keeps "
+                           + std::to_string(Monitors::n_values)
+                           + ": it was written by another version (or is "
+                             "damaged); restart it with the version that "
+                             "wrote it, or start the run anew."));
     std::array<double, Monitors::n_values> values;
     std::copy(m.begin(), m.end(), values.begin());
     monitors.set_values(values);

@@ -112,6 +112,13 @@ namespace fsgmpm
     {
       return monitors;
     }
+
+    /// The energy balance's guard (its residual and scale).
+    const StabilityGuard &
+    get_stability_guard() const
+    {
+      return stability_guard;
+    }
     const std::vector<MaterialOptions> &
     get_material_options() const
     {

@@ -123,7 +123,8 @@ namespace fsgmpm
     if (column == "kinetic_energy" || column == "strain_energy"
         || column == "potential_energy" || column == "external_work"
         || column == "dissipated_energy" || column == "grid_kinetic_energy"
-        || per_body("body_kinetic_energy"))
+        || column == "material_dissipation" || column == "numerical_dissipation"
+        || column == "outflow_energy" || per_body("body_kinetic_energy"))
       return energy;
     if (per_body("body_mass"))
       return plane ? "kg/m" : "kg";

@@ -24,4 +24,5 @@ namespace fsgmpm
       }
     update_stresses(kinematics.data(), stress, n, dt);
   }
+
 } // namespace fsgmpm

@@ -235,6 +235,33 @@ namespace fsgmpm
 
 
   double
+  MohrCoulomb::dissipated_energy(const SymmetricTensor<2, 3> *old_stress,
+                                 const SymmetricTensor<2, 3> *new_stress,
+                                 const double * /*old_volume*/,
+                                 const double          *new_volume,
+                                 const PointKinematics &kinematics,
+                                 const unsigned int     n,
+                                 const double           dt) const
+  {
+    const double E = elasticity.E, nu = elasticity.nu;
+    double       work = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        // The plastic strain increment C^-1 : (sigma_trial - sigma^{n+1}).
+        const SymmetricTensor<2, 3> excess
+          = elasticity.hill_predictor(old_stress[i], kinematics, dt)
+            - new_stress[i];
+        const SymmetricTensor<2, 3> plastic_strain
+          = (1 + nu) / E * excess
+            - nu / E * trace(excess) * unit_symmetric_tensor<3>();
+        work += new_volume[i] * (new_stress[i] * plastic_strain);
+      }
+    return work;
+  }
+
+
+
+  double
   MohrCoulomb::strain_energy_density(const SymmetricTensor<2, 3> &s) const
   {
     return elasticity.strain_energy_density(s);

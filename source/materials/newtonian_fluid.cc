@@ -249,6 +249,30 @@ namespace fsgmpm
 
 
 
+  double
+  NewtonianFluid::dissipated_energy(const SymmetricTensor<2, 3> *old_stress,
+                                    const SymmetricTensor<2, 3> *new_stress,
+                                    const double                *old_volume,
+                                    const double                *new_volume,
+                                    const PointKinematics       &kinematics,
+                                    const unsigned int           n,
+                                    const double                 dt) const
+  {
+    // A class derived from this one (a Bingham mud) has its own stress and
+    // books its own losses.
+    if (!is_this_class())
+      return Material::dissipated_energy(
+        old_stress, new_stress, old_volume, new_volume, kinematics, n, dt);
+    const SymmetricTensor<2, 3> d_dev  = deviator(kinematics.strain_rate);
+    const double                rate   = 2. * mu * (d_dev * d_dev) * dt;
+    double                      volume = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      volume += 0.5 * (old_volume[i] + new_volume[i]);
+    return rate * volume;
+  }
+
+
+
   FSGMPM_REGISTER_MATERIAL(NewtonianFluid,
                            "Newtonian fluid",
                            "weakly compressible Newtonian fluid, Eq. (13) "

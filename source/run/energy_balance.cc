@@ -106,10 +106,14 @@ namespace fsgmpm
 
     void
     add_step(const Stages::GridUpdateResult &grid_result,
+             const StepLosses               &losses,
              const unsigned int              lost_particles,
              Monitors                       &monitors)
     {
       monitors.lost_particles += lost_particles;
+      monitors.material_dissipation += losses.material;
+      monitors.numerical_dissipation += losses.numerical;
+      monitors.outflow_energy += losses.outflow;
       monitors.external_work += grid_result.external_work_increment.value();
       monitors.dissipated_energy += grid_result.damping_work_increment.value();
 

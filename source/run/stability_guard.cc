@@ -2,6 +2,7 @@
 
 #include <fsgmpm/run/stability_guard.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fsgmpm
@@ -57,8 +58,9 @@ namespace fsgmpm
 
 
   void
-  StabilityGuard::reset(const Monitors &monitors)
+  StabilityGuard::reset(const Monitors &monitors, const double held)
   {
+    held_energy = std::max(0., held);
     history.clear();
     history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                         monitors.external_work}});
@@ -88,18 +90,19 @@ namespace fsgmpm
     external_work_scale
       = std::max(external_work_scale, std::abs(monitors.external_work));
     const double stored  = monitors.kinetic_energy + monitors.strain_energy;
-    const double created = energy_residual(monitors);
+    const double created = energy_created(monitors);
     const double scale   = energy_scale();
     if (settings.energy_creation_tolerance > 0 && scale > 0
         && created > settings.energy_creation_tolerance * scale)
       return "the kinetic plus strain energy (" + std::to_string(stored)
              + " J) exceeds the initial energy plus the external work minus "
-               "the damping work by "
+               "the booked losses by "
              + std::to_string(created) + " J, more than "
              + std::to_string(settings.energy_creation_tolerance)
-             + " times the energy put in (" + std::to_string(scale)
-             + " J): the step is creating energy (Stability/Energy "
-               "creation tolerance = 0 disables this check)";
+             + " times the energy scale (" + std::to_string(scale)
+             + " J: the energy put in and held): the step is creating "
+               "energy (Stability/Energy creation tolerance = 0 disables "
+               "this check)";
 
     history.push_back({{stored, monitors.external_work}});
     if (history.size() > settings.growth_window + 1)
@@ -128,7 +131,24 @@ namespace fsgmpm
   {
     return monitors.kinetic_energy + monitors.strain_energy
            - (initial_energy + monitors.external_work
-              - monitors.dissipated_energy);
+              - monitors.dissipated_energy - monitors.material_dissipation
+              - monitors.numerical_dissipation - monitors.outflow_energy);
+  }
+
+
+
+  double
+  StabilityGuard::energy_created(const Monitors &monitors) const
+  {
+    // Plastic work in the soil may not hide energy created by a transfer,
+    // nor energy created in a material (a negative material_dissipation)
+    // be hidden by the transfers' losses.
+    return monitors.kinetic_energy + monitors.strain_energy
+           - (initial_energy + monitors.external_work
+              - monitors.dissipated_energy
+              - std::max(0., monitors.material_dissipation)
+              - std::max(0., monitors.numerical_dissipation)
+              - std::max(0., monitors.outflow_energy));
   }
 
 
@@ -136,7 +156,7 @@ namespace fsgmpm
   std::vector<double>
   StabilityGuard::state() const
   {
-    std::vector<double> s = {initial_energy, external_work_scale};
+    std::vector<double> s = {initial_energy, external_work_scale, held_energy};
     for (const auto &h : history)
       s.insert(s.end(), h.begin(), h.end());
     return s;
@@ -147,13 +167,14 @@ namespace fsgmpm
   void
   StabilityGuard::set_state(const std::vector<double> &s)
   {
-    AssertThrow(s.size() >= 2 && s.size() % 2 == 0,
+    AssertThrow(s.size() >= 3 && s.size() % 2 == 1,
                 dealii::ExcMessage("The checkpoint's stability-guard state "
                                    "is damaged."));
     initial_energy      = s[0];
     external_work_scale = s[1];
+    held_energy         = s[2];
     history.clear();
-    for (unsigned int k = 2; k < s.size(); k += 2)
+    for (unsigned int k = 3; k < s.size(); k += 2)
       history.push_back({{s[k], s[k + 1]}});
   }
 } // namespace fsgmpm

@@ -12,7 +12,9 @@ namespace fsgmpm
                         const std::vector<MaterialOptions> &options,
                         SmoothingFields<dim>               &smoothing,
                         ParticleStore<dim>                 &particles,
-                        const std::function<void()>        &synchronise)
+                        const std::function<void()>        &synchronise,
+                        const std::vector<std::unique_ptr<Material>> *materials,
+                        CompensatedSum *reset_energy)
     {
       bool any = false;
       for (const auto &o : options)
@@ -81,6 +83,9 @@ namespace fsgmpm
         synchronise();
       std::vector<std::pair<unsigned int, unsigned int>> flagged(
         particles.occupied_cells.size(), {0, 0});
+      // The stored energy the reset removes, per cell (owned points only).
+      const bool book = (materials != nullptr && reset_energy != nullptr);
+      std::vector<double> reset(book ? particles.occupied_cells.size() : 0, 0.);
       CellLoops::parallel_range(
         particles.occupied_cells.size(),
         [&](const unsigned int b, const unsigned int e) {
@@ -107,6 +112,28 @@ namespace fsgmpm
                   particles.free_surface[p] = free;
                   if (free)
                     {
+                      if (book
+                          && (particles.ghost.empty()
+                              || particles.ghost[p] == 0))
+                        {
+                          const Material &material
+                            = *(*materials)[particles.material_id[p]];
+                          const double before = material.add_strain_energy(
+                            &particles.stress[p],
+                            &particles.volume[p],
+                            &particles.reference_volume[p],
+                            1,
+                            0.);
+                          const SymmetricTensor<2, 3> after_stress
+                            = deviator(particles.stress[p]);
+                          reset[ci] += before
+                                       - material.add_strain_energy(
+                                         &after_stress,
+                                         &particles.reference_volume[p],
+                                         &particles.reference_volume[p],
+                                         1,
+                                         0.);
+                        }
                       // Zero pressure, volume back to the reference state.
                       particles.stress[p] = deviator(particles.stress[p]);
                       particles.volume[p] = particles.reference_volume[p];
@@ -122,6 +149,9 @@ namespace fsgmpm
           n.first += f.first;
           n.second += f.second;
         }
+      // In the order of the cells: the same for any number of threads.
+      for (const double e : reset)
+        reset_energy->add(e);
       return n;
     }
 
@@ -133,13 +163,17 @@ namespace fsgmpm
                            const std::vector<MaterialOptions> &,
                            SmoothingFields<2> &,
                            ParticleStore<2> &,
-                           const std::function<void()> &);
+                           const std::function<void()> &,
+                           const std::vector<std::unique_ptr<Material>> *,
+                           CompensatedSum *);
     template std::pair<unsigned int, unsigned int>
     detect_free_surface<3>(const BackgroundGrid<3> &,
                            const NodalFields<3> &,
                            const std::vector<MaterialOptions> &,
                            SmoothingFields<3> &,
                            ParticleStore<3> &,
-                           const std::function<void()> &);
+                           const std::function<void()> &,
+                           const std::vector<std::unique_ptr<Material>> *,
+                           CompensatedSum *);
   } // namespace Stages
 } // namespace fsgmpm

@@ -272,7 +272,8 @@ namespace fsgmpm
                   dt,
                   particles,
                   tau > 0 ? -std::expm1(-dt / tau) : 0.,
-                  xpic ? &this->xpic.correction : nullptr);
+                  xpic ? &this->xpic.correction : nullptr,
+                  &result.numerical_dissipation);
     }
     if (membrane_coupling)
       {
@@ -333,14 +334,20 @@ namespace fsgmpm
                             dt,
                             smoothing,
                             particles,
-                            settings.stress_integration);
+                            settings.stress_integration,
+                            &result.material_dissipation);
     }
     {
       TimerOutput::Scope scope(timer, "free_surface");
       result.free_surface = Stages::detect_free_surface(
-        grid, nodes, material_options, smoothing, particles, [this]() {
-          synchronise_free_surface();
-        });
+        grid,
+        nodes,
+        material_options,
+        smoothing,
+        particles,
+        [this]() { synchronise_free_surface(); },
+        &materials,
+        &result.numerical_dissipation);
     }
     {
       TimerOutput::Scope scope(timer, "anp");
@@ -371,7 +378,10 @@ namespace fsgmpm
       {
         {
           TimerOutput::Scope scope(timer, "relocate");
-          result.lost_particles = Stages::relocate(grid, particles);
+          result.lost_particles = Stages::relocate(grid,
+                                                   particles,
+                                                   &materials,
+                                                   &result.outflow_energy);
         }
         // The membrane's slip, splits, location and element forces.
         if (membrane_coupling)

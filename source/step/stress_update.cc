@@ -18,7 +18,8 @@ namespace fsgmpm
                   const double                                  dt,
                   SmoothingFields<dim>                         &smoothing,
                   ParticleStore<dim>                           &particles,
-                  const StressIntegration                       integration)
+                  const StressIntegration                       integration,
+                  CompensatedSum                               *dissipation)
     {
       const bool per_point
         = (integration == StressIntegration::nodal_projection);
@@ -96,9 +97,61 @@ namespace fsgmpm
         particles.volume[p] = J * particles.reference_volume[p];
         return J;
       };
-      CellLoops::for_each_occupied_cell(particles, [&](const unsigned int c) {
-        const unsigned int begin = particles.cell_begin(c);
-        const unsigned int end   = particles.cell_end(c);
+      // The material dissipation is booked for the points this process
+      // owns (not for ghost copies, MPI), from each run's stresses and
+      // volumes before and after (Material::dissipated_energy()).
+      const bool                book = (dissipation != nullptr);
+      std::vector<std::uint8_t> dissipates(materials.size());
+      for (unsigned int m = 0; m < materials.size(); ++m)
+        dissipates[m] = materials[m]->dissipates();
+      const auto is_ghost_cell
+        = [&](const unsigned int begin, const unsigned int end) {
+            return !particles.ghost.empty() && end > begin
+                   && particles.ghost[begin] != 0;
+          };
+      thread_local std::vector<SymmetricTensor<2, 3>> old_stress;
+      thread_local std::vector<double>                old_volume;
+      const auto                                      remember
+        = [&](const unsigned int begin, const unsigned int end) {
+            if (old_stress.size() < end - begin)
+              {
+                old_stress.resize(end - begin);
+                old_volume.resize(end - begin);
+              }
+            std::copy(particles.stress.begin() + begin,
+                      particles.stress.begin() + end,
+                      old_stress.begin());
+            std::copy(particles.volume.begin() + begin,
+                      particles.volume.begin() + end,
+                      old_volume.begin());
+          };
+      const auto dissipated_in_run = [&](const unsigned int     begin,
+                                         const unsigned int     run,
+                                         const unsigned int     last,
+                                         const PointKinematics &kin) {
+        return materials[particles.material_id[run]]->dissipated_energy(
+          old_stress.data() + (run - begin),
+          particles.stress.data() + run,
+          old_volume.data() + (run - begin),
+          particles.volume.data() + run,
+          kin,
+          last - run,
+          dt);
+      };
+      const auto update_cell = [&](const unsigned int c, double &dissipated) {
+        const unsigned int begin  = particles.cell_begin(c);
+        const unsigned int end    = particles.cell_end(c);
+        bool               booked = book && !is_ghost_cell(begin, end);
+        if (booked)
+          {
+            // Only the cells that hold a dissipating material keep their
+            // old state.
+            booked = false;
+            for (unsigned int p = begin; p < end && !booked; ++p)
+              booked = dissipates[particles.material_id[p]] != 0;
+          }
+        if (booked)
+          remember(begin, end);
         if (!per_point)
           {
             // Every point of the cell has the cell's strain rate, and its
@@ -136,6 +189,8 @@ namespace fsgmpm
                                                        + run,
                                                      last - run,
                                                      dt);
+                if (booked)
+                  dissipated += dissipated_in_run(begin, run, last, kin);
                 run = last;
               }
             return;
@@ -170,9 +225,38 @@ namespace fsgmpm
               particles.stress.data() + run,
               last - run,
               dt);
+            if (booked)
+              for (unsigned int p = run; p < last; ++p)
+                dissipated
+                  += dissipated_in_run(begin, p, p + 1, kinematics[p - begin]);
             run = last;
           }
-      });
+      };
+      const auto &cells = particles.occupied_cells;
+      if (!book)
+        {
+          CellLoops::for_each_occupied_cell(particles, [&](const unsigned c) {
+            double unused = 0;
+            update_cell(c, unused);
+          });
+          return;
+        }
+      // Compensated sums in fixed chunks of 16 cells (the loop's own grain,
+      // so that the threads share the work as well): the same for any
+      // number of threads.
+      const CompensatedSum sum = CellLoops::chunked_reduction(
+        cells.size(),
+        16,
+        CompensatedSum(),
+        [&](const unsigned int a, CompensatedSum &s) {
+          double dissipated = 0;
+          update_cell(cells[a], dissipated);
+          s.add(dissipated);
+        },
+        [](CompensatedSum &total, const CompensatedSum &chunk) {
+          total.add(chunk);
+        });
+      dissipation->add(sum);
     }
 
     template void
@@ -182,7 +266,8 @@ namespace fsgmpm
                      const double,
                      SmoothingFields<2> &,
                      ParticleStore<2> &,
-                     StressIntegration);
+                     StressIntegration,
+                     CompensatedSum *);
     template void
     stress_update<3>(const BackgroundGrid<3> &,
                      const std::vector<std::unique_ptr<Material>> &,
@@ -190,6 +275,7 @@ namespace fsgmpm
                      const double,
                      SmoothingFields<3> &,
                      ParticleStore<3> &,
-                     StressIntegration);
+                     StressIntegration,
+                     CompensatedSum *);
   } // namespace Stages
 } // namespace fsgmpm

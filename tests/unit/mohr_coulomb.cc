@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <iomanip>
 #include <limits>
 #include <random>
 #include <vector>
@@ -558,4 +559,48 @@ TEST(MohrCoulomb, PlaneStrainPrincipalStressesAreDealIIs)
       EXPECT_EQ(a[i].first, b[i].first);
       EXPECT_EQ(a[i].second, b[i].second);
     }
+}
+
+// The plastic work booked by dissipated_energy() (monitors.csv's
+// material_dissipation): simple shear of a cohesive, frictionless soil
+// (phi = 0, psi = 0, c = 10 kPa, so that yield is tau = c) from zero stress
+// to gamma = 0.05 in 5 000 steps, the stretching d_xy = gamma_dot / 2 with
+// no spin. Elastic-perfectly plastic: tau rises as G gamma to c at
+// gamma_y = c / G, then stays, and the dissipated work per unit volume is
+// c (gamma - gamma_y) (the stored c^2 / (2 G) is the rest of the work).
+// Measured: the booked sum equals it to 1e-13 (the return mapping splits
+// the yield step exactly); nothing is booked before the yield step.
+// Tolerance 1e-10.
+TEST(MohrCoulomb, PlasticWorkIsBooked)
+{
+  const MohrCoulomb     m(E, nu, 0, 0, c, 2000);
+  const double          G = E / (2 * (1 + nu)), gamma_dot = 1, dt = 1e-5;
+  const unsigned int    n = 5000;
+  PointKinematics       k;
+  SymmetricTensor<2, 3> s;
+  k.strain_rate[0][1] = gamma_dot / 2;
+  k.rotation          = unit_symmetric_tensor<3>();
+  const double volume = 1;
+  double       booked = 0, booked_elastic = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    {
+      const SymmetricTensor<2, 3> old = s;
+      m.update_stresses(&k, &s, 1, dt);
+      const double w
+        = m.dissipated_energy(&old, &s, &volume, &volume, k, 1, dt);
+      booked += w;
+      if ((i + 1) * dt * gamma_dot < c / G)
+        booked_elastic += std::abs(w);
+    }
+  const double gamma = n * dt * gamma_dot;
+  const double exact = c * (gamma - c / G);
+  std::cout << "[ measured ] simple shear to " << gamma << ": tau " << s[0][1]
+            << " Pa (c = " << c << "), plastic work booked " << booked
+            << " J/m^3, exact " << exact << " (ratio " << booked / exact
+            << "), before yield " << booked_elastic
+            << ", ratio - 1 = " << std::setprecision(3) << booked / exact - 1
+            << std::endl;
+  EXPECT_NEAR(s[0][1] / c, 1., 1e-9);
+  EXPECT_NEAR(booked / exact, 1., 1e-10);
+  EXPECT_LT(booked_elastic, 1e-12 * exact);
 }

@@ -289,7 +289,7 @@ TEST(EnergyBalance, EnergiesAndRelaxationRatios)
     totals.push_back(e.value());
   EnergyBalance::set_energies(make_array_view(std::as_const(totals)), monitors);
   EXPECT_NEAR(monitors.kinetic_energy, ke, 1e-14 * ke);
-  EnergyBalance::add_step(step, 2, monitors);
+  EnergyBalance::add_step(step, {}, 2, monitors);
   EXPECT_EQ(monitors.external_work, 4.);
   EXPECT_EQ(monitors.dissipated_energy, 1.);
   EXPECT_EQ(monitors.lost_particles, 2u);

@@ -109,6 +109,36 @@ namespace fsgmpm
       return energy;
     }
 
+    /// Whether dissipated_energy() can be non-zero: the stress update
+    /// keeps the old stresses and volumes for it only then. A material
+    /// that overrides dissipated_energy() overrides this too.
+    virtual bool
+    dissipates() const
+    {
+      return false;
+    }
+
+    /**
+     * The energy (J; J/m in 2D) that the stress update of n points
+     * dissipated: plastic work in an elastoplastic material, viscous work
+     * in a fluid (monitors.csv's material_dissipation). The points had
+     * @p old_stress and @p old_volume and now have @p new_stress and
+     * @p new_volume, updated with @p kinematics over @p dt. The default, for
+     * an elastic material, is zero; a material that dissipates overrides
+     * it.
+     */
+    virtual double
+    dissipated_energy(const SymmetricTensor<2, 3> * /*old_stress*/,
+                      const SymmetricTensor<2, 3> * /*new_stress*/,
+                      const double * /*old_volume*/,
+                      const double * /*new_volume*/,
+                      const PointKinematics & /*kinematics*/,
+                      const unsigned int /*n*/,
+                      const double /*dt*/) const
+    {
+      return 0.;
+    }
+
     /// Mass density at which the material is created.
     virtual double
     reference_density() const = 0;

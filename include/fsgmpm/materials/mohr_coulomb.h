@@ -100,6 +100,24 @@ namespace fsgmpm
     double
     strain_energy_density(const SymmetricTensor<2, 3> &stress) const override;
 
+    bool
+    dissipates() const override
+    {
+      return true;
+    }
+
+    /// The plastic work of the return mapping, sigma^{n+1} : C^-1 :
+    /// (sigma_trial - sigma^{n+1}) V^{n+1}, sigma_trial the elastic
+    /// predictor from the old stress (backward Euler's sigma : d^p dt V).
+    double
+    dissipated_energy(const SymmetricTensor<2, 3> *old_stress,
+                      const SymmetricTensor<2, 3> *new_stress,
+                      const double                *old_volume,
+                      const double                *new_volume,
+                      const PointKinematics       &kinematics,
+                      const unsigned int           n,
+                      const double                 dt) const override;
+
     double
     reference_density() const override
     {

@@ -130,6 +130,24 @@ namespace fsgmpm
       return density;
     }
 
+    bool
+    dissipates() const override
+    {
+      return is_this_class() && mu > 0;
+    }
+
+    /// The viscous work 2 mu dev(d) : dev(d) V dt: the pressure is the
+    /// gradient of the stored energy of J (volume_ratio_energy()) and
+    /// dissipates nothing.
+    double
+    dissipated_energy(const SymmetricTensor<2, 3> *old_stress,
+                      const SymmetricTensor<2, 3> *new_stress,
+                      const double                *old_volume,
+                      const double                *new_volume,
+                      const PointKinematics       &kinematics,
+                      const unsigned int           n,
+                      const double                 dt) const override;
+
     double
     viscosity() const override
     {

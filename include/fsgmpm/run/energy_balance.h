@@ -63,7 +63,14 @@ namespace fsgmpm
     void
     set_energies(const ArrayView<const double> &totals, Monitors &monitors);
 
-    /// Books a step's external and damping work and its lost points, and
+    /// A step's booked losses (MpmStep::Result), summed over the processes.
+    struct StepLosses
+    {
+      double material = 0, numerical = 0, outflow = 0;
+    };
+
+    /// Books a step's external and damping work, its losses and its lost
+    /// points, and
     /// the dynamic-relaxation ratios of Eq. (30): E_v = grid kinetic
     /// energy (compute_energies() with the nodes, called before) / external
     /// work, E_f = |F_ext - F_int| / |F_ext| over the unconstrained nodal
@@ -71,6 +78,7 @@ namespace fsgmpm
     /// MPI, @p grid_result and @p lost_particles are already global.
     void
     add_step(const Stages::GridUpdateResult &grid_result,
+             const StepLosses               &losses,
              const unsigned int              lost_particles,
              Monitors                       &monitors);
 

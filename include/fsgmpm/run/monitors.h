@@ -22,14 +22,24 @@ namespace fsgmpm
     /// deposit at rest can hold most of kinetic_energy as such noise;
     /// Termination = at_rest and Eq. (30) use this one.
     double grid_kinetic_energy = 0;
+    /// The losses the step books (accumulated, J; J/m in 2D), so that the
+    /// energy balance's residual is what no monitor books (walls, contact,
+    /// the grid transfers): plastic and viscous work
+    /// (Material::dissipated_energy());
+    double material_dissipation = 0;
+    /// what the FLIP-PIC/XPIC blend or APIC's transfer took from the points'
+    /// kinetic energy and the free-surface reset from their stored energy;
+    double numerical_dissipation = 0;
+    /// the kinetic and stored energy of the points that left the mesh.
+    double outflow_energy = 0;
     /// Flagged (free-surface) points / points of detecting materials.
     double free_surface_fraction = 0;
 
-    static constexpr unsigned int n_values = 10;
+    static constexpr unsigned int n_values = 13;
 
     /// The values in the order of monitors.csv's columns (kinetic_energy
-    /// ... grid_kinetic_energy, free_surface_fraction), for output and
-    /// checkpoints.
+    /// ... grid_kinetic_energy, material_dissipation, numerical_dissipation,
+    /// outflow_energy, free_surface_fraction), for output and checkpoints.
     std::array<double, n_values>
     values() const
     {
@@ -42,6 +52,9 @@ namespace fsgmpm
                dr_force_ratio,
                double(lost_particles),
                grid_kinetic_energy,
+               material_dissipation,
+               numerical_dissipation,
+               outflow_energy,
                free_surface_fraction}};
     }
 
@@ -58,7 +71,10 @@ namespace fsgmpm
       dr_force_ratio        = v[6];
       lost_particles        = static_cast<unsigned int>(v[7]);
       grid_kinetic_energy   = v[8];
-      free_surface_fraction = v[9];
+      material_dissipation  = v[9];
+      numerical_dissipation = v[10];
+      outflow_energy        = v[11];
+      free_surface_fraction = v[12];
     }
   };
 } // namespace fsgmpm

@@ -70,6 +70,12 @@ namespace fsgmpm
       unsigned int membrane_nodes_outside = 0;
       /// (flagged, detecting) points of the free-surface detection.
       std::pair<unsigned int, unsigned int> free_surface = {0, 0};
+      /// The step's energy losses at the points this process owns
+      /// (monitors.csv): plastic and viscous work; what the FLIP-PIC/XPIC
+      /// blend or APIC's transfer and the free-surface reset removed; the
+      /// kinetic and stored energy of the points that left the mesh.
+      CompensatedSum material_dissipation, numerical_dissipation,
+        outflow_energy;
     };
 
     MpmStep(const BackgroundGrid<dim>                    &grid,

@@ -178,7 +178,12 @@ namespace fsgmpm
     /// with the fraction @p pic_fraction of PIC's v_p = sum_i N_i(x_p) v_i
     /// (0: pure FLIP), or of XPIC's sum_i N_i(x_p) (v_i + c_i) with the
     /// nodal @p xpic_correction c if given; or, if the points carry an
-    /// affine velocity, APIC: v_p = sum_i N_i(x_p) v_i.
+    /// affine velocity, APIC: v_p = sum_i N_i(x_p) v_i. With @p removed,
+    /// the kinetic energy that the blend or APIC's transfer takes from the
+    /// owned points, against FLIP's v_p + dt a(x_p), is added to it. (FLIP's
+    /// own interpolation of the nodal increments is not booked: its grid
+    /// side, sum_i m_i |dt a_i|^2 / 2, is dominated by nearly empty nodes
+    /// whose velocities the points never take.)
     template <int dim>
     void
     g2p(const BackgroundGrid<dim>         &grid,
@@ -186,7 +191,8 @@ namespace fsgmpm
         const double                       dt,
         ParticleStore<dim>                &particles,
         const double                       pic_fraction    = 0,
-        const std::vector<Tensor<1, dim>> *xpic_correction = nullptr);
+        const std::vector<Tensor<1, dim>> *xpic_correction = nullptr,
+        CompensatedSum                    *removed         = nullptr);
 
     /// Stage 4 (Eq. 20): nodal velocities from the updated particle (and
     /// membrane-node) momenta, with the kinematic wall conditions
@@ -276,6 +282,8 @@ namespace fsgmpm
     /// admissible volume ratio), and the stress update per material. The
     /// velocity gradient is the cell's, or, with @p integration =
     /// nodal_projection, sum_j N_j(x_p) Lbar_j of nodal_velocity_gradients.
+    /// With @p dissipation, the plastic and viscous work of the owned points
+    /// (Material::dissipated_energy()) is added to it.
     template <int dim>
     void
     stress_update(const BackgroundGrid<dim>                    &grid,
@@ -285,12 +293,15 @@ namespace fsgmpm
                   SmoothingFields<dim>                         &smoothing,
                   ParticleStore<dim>                           &particles,
                   const StressIntegration                       integration
-                  = StressIntegration::points);
+                  = StressIntegration::points,
+                  CompensatedSum *dissipation = nullptr);
 
     /// Stage 5d (paper Section 4, volume-fraction form): flag the points of
     /// detecting materials whose interpolated nodal volume fraction is at
     /// most f_c; flagged points get zero pressure and their reference
-    /// volume. Returns the numbers of flagged and of detecting points.
+    /// volume. Returns the numbers of flagged and of detecting points. With
+    /// @p materials and @p reset_energy, the stored energy that the reset of
+    /// the flagged owned points' volumes removes is added to it.
     template <int dim>
     std::pair<unsigned int, unsigned int>
     detect_free_surface(const BackgroundGrid<dim>          &grid,
@@ -298,7 +309,10 @@ namespace fsgmpm
                         const std::vector<MaterialOptions> &options,
                         SmoothingFields<dim>               &smoothing,
                         ParticleStore<dim>                 &particles,
-                        const std::function<void()>        &synchronise = {});
+                        const std::function<void()>        &synchronise = {},
+                        const std::vector<std::unique_ptr<Material>> *materials
+                        = nullptr,
+                        CompensatedSum *reset_energy = nullptr);
 
     /// Stage 5e, ANP (Eqs. 28-29): nodal volume-weighted average of the
     /// pressure of the non-flagged points per material, mapped back as the
@@ -324,9 +338,14 @@ namespace fsgmpm
 
     /// Stage 7: locate every point again (walk from its old cell), remove
     /// points that left the mesh and sort by cell. Returns the number lost.
+    /// With @p materials and @p outflow_energy, the kinetic and stored
+    /// energy of the lost points is added to it.
     template <int dim>
     unsigned int
-    relocate(const BackgroundGrid<dim> &grid, ParticleStore<dim> &particles);
+    relocate(const BackgroundGrid<dim>                    &grid,
+             ParticleStore<dim>                           &particles,
+             const std::vector<std::unique_ptr<Material>> *materials = nullptr,
+             CompensatedSum *outflow_energy                          = nullptr);
 
     /// Stable time step C * min over points of h / (c_p + |v_p| + 2 d nu/h)
     /// (wave speed, particle speed, and the explicit viscous limit;
