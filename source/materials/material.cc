@@ -24,5 +24,4 @@ namespace fsgmpm
       }
     update_stresses(kinematics.data(), stress, n, dt);
   }
-
 } // namespace fsgmpm
