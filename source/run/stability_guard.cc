@@ -140,15 +140,14 @@ namespace fsgmpm
   double
   StabilityGuard::energy_created(const Monitors &monitors) const
   {
-    // Plastic work in the soil may not hide energy created by a transfer,
+    // The residual with each booked loss counted only where it is a loss:
+    // plastic work in the soil may not hide energy created by a transfer,
     // nor energy created in a material (a negative material_dissipation)
     // be hidden by the transfers' losses.
-    return monitors.kinetic_energy + monitors.strain_energy
-           - (initial_energy + monitors.external_work
-              - monitors.dissipated_energy
-              - std::max(0., monitors.material_dissipation)
-              - std::max(0., monitors.numerical_dissipation)
-              - std::max(0., monitors.outflow_energy));
+    return energy_residual(monitors)
+           + std::max(0., -monitors.material_dissipation)
+           + std::max(0., -monitors.numerical_dissipation)
+           + std::max(0., -monitors.outflow_energy);
   }
 
 

@@ -149,7 +149,8 @@ end
 // energy the scene holds (the water's potential energy above the floor,
 // 134 J/m); against the energy put in alone (5e-5 J/m: the first steps'
 // acoustic transient) it stopped this tank as unstable at 0.033 s with
-// 2.5e-5 J/m created.
+// 2.5e-5 J/m created. Measured: kinetic energy at most 1.8e-7 of the
+// potential energy (the first steps' acoustic transient); asserted 5e-7.
 TEST(StillWater, EnergyGuardLetsRealWaterRest)
 {
   std::string scene   = tank_scene(0.5, 0.05);
@@ -168,7 +169,7 @@ TEST(StillWater, EnergyGuardLetsRealWaterRest)
             << sim.get_stability_guard().energy_residual(sim.get_monitors())
             << " J/m of the scale " << sim.get_stability_guard().energy_scale()
             << " J/m" << std::endl;
-  EXPECT_LT(ke, 1e-6);
+  EXPECT_LT(ke, 5e-7);
 }
 
 TEST(StillWater, TankAtRestSloshesWithoutTheStabilisation)
