@@ -351,6 +351,19 @@ namespace fsgmpm
     if (partition)
       DistributedPoints::add_ghosts(*partition, particles);
     rebuild_nodal_fields();
+    // A fixed time step above the explicit limit is refused now, before
+    // the run writes anything, with the message its first step would give
+    // (the same state, nodal masses and bound).
+    if (params.time_step.fixed_dt > 0)
+      {
+        double dt_stable = mpm_step->stable_time_step();
+        if (partition)
+          dt_stable
+            = Utilities::MPI::min(dt_stable, partition->get_communicator());
+        const std::string problem
+          = time_step_control.check_fixed(dt_stable, step + 1);
+        AssertThrow(problem.empty(), ExcMessage(problem));
+      }
     set_free_surface_fraction(Stages::detect_free_surface(
       *grid, nodes, material_options, smoothing, particles, [this]() {
         mpm_step->synchronise_free_surface();
@@ -1060,30 +1073,27 @@ namespace fsgmpm
     bool detecting = false;
     for (const auto &o : material_options)
       detecting = detecting || o.detect_free_surface;
-    std::vector<std::string> columns = {"time",
-                                        "step",
-                                        "dt",
-                                        "kinetic_energy",
-                                        "strain_energy",
-                                        "potential_energy",
-                                        "external_work",
-                                        "dissipated_energy",
-                                        "dr_energy_ratio",
-                                        "dr_force_ratio",
-                                        "lost_particles",
-                                        "grid_kinetic_energy",
-                                        "material_dissipation",
-                                        "numerical_dissipation",
-                                        "outflow_energy"};
-    if (detecting)
-      columns.push_back("free_surface_fraction");
-    for (const auto &name : scene_monitors->names())
-      columns.push_back(name);
+    std::vector<std::string> columns      = {"time", "step", "dt"};
+    std::vector<std::string> units        = {"s", "", "s"};
+    const auto               base_columns = Monitors::names();
+    const auto               base_units   = Monitors::units(dim);
+    for (unsigned int k = 0; k < Monitors::n_values; ++k)
+      if (base_columns[k] != "free_surface_fraction" || detecting)
+        {
+          columns.push_back(base_columns[k]);
+          units.push_back(base_units[k]);
+        }
+    for (unsigned int k = 0; k < scene_monitors->names().size(); ++k)
+      {
+        columns.push_back(scene_monitors->names()[k]);
+        units.push_back(scene_monitors->units()[k]);
+      }
     monitor_columns = columns;
+    monitor_units   = units;
     // The header carries each column's unit: "kinetic_energy[J/m]".
     std::vector<std::string> headers;
-    for (const auto &column : columns)
-      headers.push_back(monitor_column_header(column, dim));
+    for (unsigned int k = 0; k < columns.size(); ++k)
+      headers.push_back(monitor_column_header(columns[k], units[k]));
     if (root)
       monitor_file
         = resumed
@@ -1310,7 +1320,7 @@ namespace fsgmpm
              + json_number(c < last_monitor_row.size() ? last_monitor_row[c]
                                                        : std::nan(""));
         units += (c ? ", " : "") + json_string(column) + ": "
-                 + json_string(monitor_column_unit(column, dim));
+                 + json_string(monitor_units[c]);
       }
     final_monitors += "}";
     units += "}";

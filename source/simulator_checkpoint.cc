@@ -405,11 +405,18 @@ namespace fsgmpm
         check_checkpoint_parameters(*in);
         load_checkpoint(*in);
         AssertThrow(!time_step_control.reached_end(time, step),
-                    ExcMessage("The checkpoint <" + file.string()
-                               + "> is at t = " + std::to_string(time)
-                               + " s, step " + std::to_string(step)
-                               + ", already at Simulation/End time or Maximum "
-                                 "number of steps; raise them to continue."));
+                    ExcMessage(
+                      "The checkpoint <" + file.string()
+                      + "> is at t = " + std::to_string(time) + " s, step "
+                      + std::to_string(step) + ", already at "
+                      + (time_step_control.reached_end_time(time)
+                           ? "Simulation/End time = "
+                               + std::to_string(params.time_step.end_time)
+                               + " s; raise it to continue."
+                           : "Simulation/Maximum number of steps = "
+                               + std::to_string(params.time_step.max_steps)
+                               + "; raise it (or set 0, no limit) to "
+                                 "continue.")));
         params.output_directory = directory;
         resumed                 = true;
         if (!params.quiet && root)

@@ -391,6 +391,7 @@ namespace fsgmpm
     /// The columns of monitors.csv (without their units) and the last row
     /// written, for summary.json.
     std::vector<std::string>        monitor_columns;
+    std::vector<std::string>        monitor_units;
     std::vector<double>             last_monitor_row;
     std::unique_ptr<RunOutput<dim>> output;
     OutputSchedule                  output_schedule, checkpoint_schedule;

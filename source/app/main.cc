@@ -15,6 +15,7 @@
 
 #include <fsgmpm/base/version.h>
 #include <fsgmpm/default_scene.h>
+#include <fsgmpm/io/run_log.h>
 #include <fsgmpm/run/interruption.h>
 #include <fsgmpm/scene/parameter_file_check.h>
 #include <fsgmpm/scene/parameter_path.h>
@@ -119,15 +120,14 @@ namespace
   /// command_line.txt (the version and the command). Each is written to a
   /// temporary name and renamed, so that no half-written file is left.
   void
-  write_run_input(ParameterHandler &prm, const std::string &command)
+  write_run_input(ParameterHandler            &prm,
+                  const std::string           &command,
+                  const std::filesystem::path &dir)
   {
     namespace fs = std::filesystem;
     if (Utilities::MPI::job_supports_mpi()
         && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
-    prm.enter_subsection("Output");
-    const fs::path dir = prm.get("Directory");
-    prm.leave_subsection();
     fs::create_directories(dir);
     const auto write = [&](const std::string                         &name,
                            const std::function<void(std::ostream &)> &body) {
@@ -156,14 +156,21 @@ namespace
   int
   run_scene(ParameterHandler  &prm,
             const std::string &restart_directory,
-            const std::string &command)
+            const std::string &command,
+            fsgmpm::RunLog    *run_log)
   {
     fsgmpm::Simulator<dim> simulator(prm);
     if (!restart_directory.empty())
       simulator.restart(restart_directory);
     // After the scene has been validated and built: nothing is written for
     // a run that cannot start.
-    write_run_input(prm, command);
+    // The run's directory (a restart continues in the one it names).
+    const std::filesystem::path dir
+      = simulator.get_parameters().output_directory;
+    write_run_input(prm, command, dir);
+    // log.txt from the start (the setup's warnings), continued on a restart.
+    if (run_log != nullptr)
+      run_log->open(dir / "log.txt", !restart_directory.empty());
     // From here on SIGTERM and SIGINT stop the run after its step, with
     // its checkpoint and summary.json written.
     fsgmpm::Interruption::install_handlers();
@@ -216,6 +223,11 @@ main(int argc, char **argv)
   if (started_by_mpi_launcher())
     mpi
       = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv);
+  // What the terminal shows, kept for the run's log.txt (the first process
+  // writes it); it outlives the error messages below.
+  std::unique_ptr<fsgmpm::RunLog> run_log;
+  if (!mpi || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    run_log = std::make_unique<fsgmpm::RunLog>();
   try
     {
       std::string              prm_file;
@@ -307,8 +319,9 @@ main(int argc, char **argv)
             quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
           command += (i > 0 ? " " : "") + quoted + "'";
         }
-      return dim == 2 ? run_scene<2>(prm, restart_directory, command)
-                      : run_scene<3>(prm, restart_directory, command);
+      return dim == 2
+               ? run_scene<2>(prm, restart_directory, command, run_log.get())
+               : run_scene<3>(prm, restart_directory, command, run_log.get());
     }
   catch (dealii::ExceptionBase &e)
     {

@@ -107,66 +107,8 @@ namespace fsgmpm
   }
 
   std::string
-  monitor_column_unit(const std::string &column, const unsigned int dim)
+  monitor_column_header(const std::string &column, const std::string &unit)
   {
-    const bool        plane  = (dim == 2);
-    const std::string energy = plane ? "J/m" : "J";
-    // bodies_monitor: one column per body, "quantity_<body>".
-    const auto per_body = [&](const std::string &quantity) {
-      return column.rfind(quantity + "_", 0) == 0
-             && column.find_first_not_of("0123456789", quantity.size() + 1)
-                  == std::string::npos
-             && column.size() > quantity.size() + 1;
-    };
-    if (column == "time" || column == "dt")
-      return "s";
-    if (column == "kinetic_energy" || column == "strain_energy"
-        || column == "potential_energy" || column == "external_work"
-        || column == "dissipated_energy" || column == "grid_kinetic_energy"
-        || column == "material_dissipation" || column == "numerical_dissipation"
-        || column == "outflow_energy" || per_body("body_kinetic_energy"))
-      return energy;
-    if (per_body("body_mass"))
-      return plane ? "kg/m" : "kg";
-    // Lengths: the dam break's and deposit's, the geotube's and the
-    // container's.
-    for (const char *length : {"front_position",
-                               "column_height",
-                               "runout",
-                               "final_height",
-                               "height",
-                               "width",
-                               "contact_width",
-                               "membrane_length",
-                               "container_centre_x",
-                               "container_centre_y",
-                               "water_inside_depth",
-                               "soil_outside_distance"})
-      if (column == length)
-        return "m";
-    if (column == "max_tension" || column == "mean_tension")
-      return "N/m";
-    if (column == "top_pressure" || column == "bottom_pressure")
-      return "Pa";
-    // The cross-section of the geotube (per unit length of an extruded 3D
-    // one); the container's soil: an area in 2D, a volume in 3D.
-    if (column == "enclosed_area" || column == "fluid_volume")
-      return "m^2";
-    if (column == "soil_area")
-      return plane ? "m^2" : "m^3";
-    if (column == "container_velocity_y")
-      return "m/s";
-    if (column == "container_tilt")
-      return "deg";
-    return "";
-  }
-
-
-
-  std::string
-  monitor_column_header(const std::string &column, const unsigned int dim)
-  {
-    const std::string unit = monitor_column_unit(column, dim);
     return unit.empty() ? column : column + "[" + unit + "]";
   }
 

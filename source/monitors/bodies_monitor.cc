@@ -39,6 +39,19 @@ namespace fsgmpm
 
 
   template <int dim>
+  std::vector<std::string>
+  BodiesMonitor<dim>::column_units() const
+  {
+    std::vector<std::string> units;
+    for (const std::string unit :
+         {dim == 2 ? "kg/m" : "kg", dim == 2 ? "J/m" : "J"})
+      units.resize(units.size() + n_bodies, unit);
+    return units;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   BodiesMonitor<dim>::evaluate(const MonitorContext<dim> &context) const
   {

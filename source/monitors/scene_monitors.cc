@@ -99,6 +99,13 @@ namespace fsgmpm
           }
         const SceneMonitor<dim> &monitor = *monitors[m].second;
         const auto               all     = monitor.column_names();
+        const auto               units   = monitor.column_units();
+        AssertThrow(units.size() == all.size(),
+                    ExcMessage("Scene monitor " + monitor_name + " gives "
+                               + std::to_string(units.size())
+                               + " units for its " + std::to_string(all.size())
+                               + " columns (column_units() must give one "
+                                 "per column, empty for a number)."));
         for (const auto &column :
              name == monitor_name ? all : monitor.columns_of(name))
           {
@@ -108,6 +115,7 @@ namespace fsgmpm
                                    + ": the column " + column + " of " + name
                                    + " is not among its columns."));
             columns.push_back(column);
+            column_units.push_back(units[j - all.begin()]);
             source.emplace_back(m, j - all.begin());
           }
       }

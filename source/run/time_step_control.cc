@@ -82,22 +82,31 @@ namespace fsgmpm
 
 
   std::string
+  TimeStepControl::check_fixed(const double       dt_stable,
+                               const unsigned int step) const
+  {
+    // dt_stable carries the Courant number; the limit itself does not.
+    if (settings.fixed_dt > 0
+        && settings.fixed_dt > dt_stable / settings.courant)
+      return "Simulation/Fixed time step = " + format(settings.fixed_dt)
+             + " s exceeds the explicit stability limit "
+             + format(dt_stable / settings.courant) + " s at step "
+             + std::to_string(step)
+             + "; use a smaller fixed time step or 0 (automatic).";
+    return "";
+  }
+
+
+
+  std::string
   TimeStepControl::choose(const double       dt_stable,
                           const double       time,
                           const unsigned int step)
   {
-    double dt = dt_stable;
-    if (settings.fixed_dt > 0)
-      {
-        dt = settings.fixed_dt;
-        // dt_stable carries the Courant number; the limit itself does not.
-        if (dt > dt_stable / settings.courant)
-          return "Simulation/Fixed time step = " + format(dt)
-                 + " s exceeds the explicit stability limit "
-                 + format(dt_stable / settings.courant) + " s at step "
-                 + std::to_string(step)
-                 + "; use a smaller fixed time step or 0 (automatic).";
-      }
+    const std::string fixed_problem = check_fixed(dt_stable, step);
+    if (!fixed_problem.empty())
+      return fixed_problem;
+    double     dt  = settings.fixed_dt > 0 ? settings.fixed_dt : dt_stable;
     const bool cut = settings.end_time - time < dt;
     if (cut)
       dt = settings.end_time - time;

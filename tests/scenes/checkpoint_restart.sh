@@ -243,7 +243,7 @@ check "every checkpoint damaged: exit 1" test $? -eq 1
 check "every checkpoint damaged: says so" grep -q "no checkpoint reads back intact" damaged.err
 "$exe" "${scene[@]}" --set "Simulation/End time=0.03" --restart dam_break.full >/dev/null 2>end.err
 check "at the end time already: exit 1" test $? -eq 1
-check "at the end time already: says to raise it" grep -q "raise them to continue" end.err
+check "at the end time already: names End time and says to raise it" grep -q "already at Simulation/End time = .* s; raise it to continue" end.err
 # A finished run continues to a later end time from its final checkpoint.
 "$exe" "${scene[@]}" --set "Simulation/End time=0.04" --restart dam_break.full >/dev/null
 check "a finished run continues to a later end time" grep -q '"termination": "end_time"' dam_break.full/summary.json

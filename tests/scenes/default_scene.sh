@@ -4,14 +4,17 @@
 # ParaView output, monitors.csv with the dam-break columns and summary.json,
 # and loses no particle; the same scene from the prm file gives the same
 # monitors, as does the parameters.prm the run writes beside its output
-# (with command_line.txt). Shortened to 0.05 s of simulated time for ctest.
+# (with command_line.txt and log.txt, what the terminal showed). Shortened to 0.05 s of simulated time for ctest.
 # Usage: default_scene.sh <fsgmpm> <source dir>
 set -eu
 exe=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-"$exe" --set "Simulation/End time=0.05" --set "Output/Directory=out"
+"$exe" --set "Simulation/End time=0.05" --set "Output/Directory=out" > terminal.txt 2>&1
+# log.txt holds what the terminal showed, from the first line.
+test -s out/log.txt
+cmp terminal.txt out/log.txt
 test -s out/monitors.csv
 # The header gives each column's unit (2D: energies per metre of
 # thickness); counts and ratios have none.
@@ -78,5 +81,7 @@ cmp out/monitors.csv out3/monitors.csv
 "$exe" --set "Simulation/End time=0.001" --set "Output/Directory=out3" \
   --set "Output/Quiet=true" 2> rerun.err
 grep -q "out3 holds the results of an earlier run" rerun.err
+# The rerun's log replaces the earlier run's.
+cmp rerun.err out3/log.txt
 ! ls out/*.tmp.* 2>/dev/null
 echo "default scene: 1 passed, 0 failed"

@@ -2,9 +2,11 @@
 # Run guards of the executable on the default scene:
 #  - 1 and 2 threads give bit-identical monitors.csv (deterministic scatters
 #    and reductions);
-#  - a fixed time step just below the stability limit runs to the end, one
-#    above it stops with termination "unstable", exit status 3, a diagnosis,
-#    and no NaN in monitors.csv or the VTU files;
+#  - a fixed time step just below the stability limit runs to the end; one
+#    above the limit at the start is refused before anything is written
+#    (exit status 1); one above it only at the impact stops there with
+#    termination "unstable", exit status 3, a diagnosis, and no NaN in
+#    monitors.csv or the VTU files;
 #  - USL on a falling block (small-mass nodes) is detected as unstable the
 #    same way, never producing NaN output;
 #  - a body resolved by a few cells gets a warning.
@@ -38,12 +40,20 @@ check "fixed dt just below the limit runs (exit 0)" test $status -eq 0
 check "fixed dt just below the limit ends at end_time" grep -q '"termination": "end_time"' below/summary.json
 check "no NaN below the limit" no_nan below
 
+# Above the limit at rest: refused before anything is written.
 "$exe" "${common[@]}" --set "Simulation/Fixed time step=6e-4" --set "Output/Directory=above" 2>above.err
 status=$?
-check "fixed dt above the limit exits 3" test $status -eq 3
-check "fixed dt above the limit is unstable" grep -q '"termination": "unstable"' above/summary.json
-check "diagnosis names the time step" grep -q "Fixed time step" above.err
-check "no NaN above the limit" no_nan above
+check "fixed dt above the limit at the start exits 1" test $status -eq 1
+check "refusal names the time step" grep -q "error: Simulation/Fixed time step = 0.0006 s exceeds the explicit stability limit" above.err
+check "nothing written for the refused run" test ! -e above
+
+# Below the limit at rest, above it at the impact: stopped there as unstable.
+"$exe" "${common[@]}" --set "Simulation/Fixed time step=4.6e-4" --set "Output/Directory=impact" 2>impact.err
+status=$?
+check "fixed dt above the limit at the impact exits 3" test $status -eq 3
+check "fixed dt above the limit at the impact is unstable" grep -q '"termination": "unstable"' impact/summary.json
+check "diagnosis names the time step" grep -q "Fixed time step" impact.err
+check "no NaN above the limit" no_nan impact
 
 "$exe" "${common[@]}" --set "Simulation/Update scheme=USL" --set "Output/Directory=usl" --set "Output/Output every n steps=10" --set "Output/Output interval=0" 2>usl.err
 status=$?

@@ -62,6 +62,13 @@ namespace fsgmpm
         return {"total_mass"};
       }
 
+      // A plug-in declares its columns' units as the shipped monitors do.
+      std::vector<std::string>
+      column_units() const override
+      {
+        return {dim == 2 ? "kg/m" : "kg"};
+      }
+
       std::vector<double>
       evaluate(const MonitorContext<dim> &context) const override
       {
@@ -169,8 +176,8 @@ end
     ASSERT_TRUE(in) << "no monitors.csv";
     std::string line;
     std::getline(in, line);
-    // The header names carry units ("front_position[m]"); the plug-in's
-    // column has none (the unit table does not know it).
+    // The header names carry the units the monitors declare
+    // ("front_position[m]"), the plug-in's too.
     auto header = split(line);
     EXPECT_EQ(header[0], "time[s]");
     EXPECT_NE(std::find(header.begin(), header.end(), "kinetic_energy[J/m]"),
@@ -180,6 +187,9 @@ end
               header.end())
       << line;
     EXPECT_EQ(header.back(), "body_mass_0[kg/m]");
+    EXPECT_NE(std::find(header.begin(), header.end(), "total_mass[kg/m]"),
+              header.end())
+      << line;
     for (auto &name : header)
       name = monitor_column_name(name);
     const auto column = std::find(header.begin(), header.end(), "total_mass");

@@ -46,21 +46,11 @@ namespace fsgmpm
     unsigned int n_columns;
   };
 
-  /**
-   * The unit of a column of monitors.csv, as its header writes it
-   * ("name[unit]"): SI, per metre of thickness in 2D (energies J/m, masses
-   * kg/m, the points' areas m^2), of the whole body in 3D (J, kg, m^3).
-   * Membrane tensions are N/m in both. Empty for counts and ratios (step,
-   * lost_particles, dr_energy_ratio, ...) and for a column the table does
-   * not know (a plug-in monitor's).
-   */
+  /// The header name of @p column with its SI @p unit (the monitors
+  /// declare them: Monitors::units(), SceneMonitor::column_units()):
+  /// "column[unit]", or "column" where @p unit is empty (counts, ratios).
   std::string
-  monitor_column_unit(const std::string &column, const unsigned int dim);
-
-  /// The header name of @p column: "column[unit]", or "column" without a
-  /// unit.
-  std::string
-  monitor_column_header(const std::string &column, const unsigned int dim);
+  monitor_column_header(const std::string &column, const std::string &unit);
 
   /// The column's name in a header name of monitors.csv, without its
   /// unit: "kinetic_energy[J/m]" -> "kinetic_energy" (for readers).

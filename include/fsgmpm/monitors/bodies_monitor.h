@@ -30,6 +30,10 @@ namespace fsgmpm
     std::vector<std::string>
     columns_of(const std::string &quantity) const override;
 
+    /// kg/m and J/m in 2D, kg and J in 3D.
+    std::vector<std::string>
+    column_units() const override;
+
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
 

@@ -63,6 +63,14 @@ namespace fsgmpm
       return container_monitor_names();
     }
 
+    /// The soil's area is a volume in 3D.
+    std::vector<std::string>
+    column_units() const override
+    {
+      return {
+        "m", "m", "m/s", "deg", dim == 2 ? "m^2" : "m^3", "", "", "m", "m"};
+    }
+
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
 

@@ -31,6 +31,12 @@ namespace fsgmpm
       return quantities();
     }
 
+    std::vector<std::string>
+    column_units() const override
+    {
+      return {"m", "m"};
+    }
+
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
 

@@ -64,6 +64,14 @@ namespace fsgmpm
       return membrane_monitor_names();
     }
 
+    /// Lengths, tensions (N/m in 2D and 3D), pressures; the section's
+    /// area and the fluid's (per unit length of an extruded 3D tube).
+    std::vector<std::string>
+    column_units() const override
+    {
+      return {"m", "m", "m", "N/m", "N/m", "Pa", "Pa", "m", "m^2", "m^2", ""};
+    }
+
     std::vector<double>
     evaluate(const MonitorContext<dim> &context) const override;
 

@@ -94,6 +94,16 @@ namespace fsgmpm
     virtual std::vector<std::string>
     column_names() const = 0;
 
+    /// The SI units of column_names(), in their order, as monitors.csv's
+    /// header and summary.json write them ("front_position[m]"): per metre
+    /// of thickness in 2D (J/m, kg/m, m^2), of the whole body in 3D; empty
+    /// for counts and ratios. By default none.
+    virtual std::vector<std::string>
+    column_units() const
+    {
+      return std::vector<std::string>(column_names().size());
+    }
+
     /// The columns selected by @p quantity, one of quantities(): by default
     /// the column of that name; per-body quantities give one each.
     virtual std::vector<std::string>

@@ -46,6 +46,14 @@ namespace fsgmpm
       return columns;
     }
 
+    /// The selected columns' units (SceneMonitor::column_units()), in the
+    /// order of names().
+    const std::vector<std::string> &
+    units() const
+    {
+      return column_units;
+    }
+
     /// The columns' values (the membrane is nullptr if there is none).
     /// MPI: @p communicator holds the processes that share the points;
     /// the monitors that combine_over_processes() return global values,
@@ -77,6 +85,7 @@ namespace fsgmpm
     /// Their numbers of columns, to check what evaluate() returns.
     std::vector<unsigned int> n_columns;
     std::vector<std::string>  columns;
+    std::vector<std::string>  column_units;
     /// Column k is value source[k].second of monitor source[k].first.
     std::vector<std::pair<unsigned int, unsigned int>> source;
   };

@@ -2,6 +2,7 @@
 #define fsgmpm_run_monitors_h
 
 #include <array>
+#include <string>
 
 namespace fsgmpm
 {
@@ -36,6 +37,34 @@ namespace fsgmpm
     double free_surface_fraction = 0;
 
     static constexpr unsigned int n_values = 13;
+
+    /// The columns of values() in monitors.csv (after time, step and dt).
+    static std::array<std::string, n_values>
+    names()
+    {
+      return {{"kinetic_energy",
+               "strain_energy",
+               "potential_energy",
+               "external_work",
+               "dissipated_energy",
+               "dr_energy_ratio",
+               "dr_force_ratio",
+               "lost_particles",
+               "grid_kinetic_energy",
+               "material_dissipation",
+               "numerical_dissipation",
+               "outflow_energy",
+               "free_surface_fraction"}};
+    }
+
+    /// Their SI units: energies per metre of thickness in 2D (J/m), of the
+    /// whole body in 3D (J); the ratios and the count have none.
+    static std::array<std::string, n_values>
+    units(const unsigned int dim)
+    {
+      const std::string e = dim == 2 ? "J/m" : "J";
+      return {{e, e, e, e, e, "", "", "", e, e, e, e, ""}};
+    }
 
     /// The values in the order of monitors.csv's columns (kinetic_energy
     /// ... grid_kinetic_energy, material_dissipation, numerical_dissipation,

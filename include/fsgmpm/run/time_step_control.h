@@ -50,6 +50,12 @@ namespace fsgmpm
     std::string
     choose(const double dt_stable, const double time, const unsigned int step);
 
+    /// What choose() says of Simulation/Fixed time step against
+    /// @p dt_stable at step @p step: empty if it is automatic or stable.
+    /// The scene asks before it writes anything.
+    std::string
+    check_fixed(const double dt_stable, const unsigned int step) const;
+
     /// Whether a run at @p time after @p step steps has reached
     /// Simulation/End time or Maximum number of steps.
     bool
