@@ -580,6 +580,11 @@ namespace fsgmpm
       }
     if (params.use_apic)
       particles.enable_affine_velocity();
+    // The displacement in the output, where a body is a solid.
+    if (std::any_of(materials.begin(), materials.end(), [](const auto &m) {
+          return !m->is_fluid();
+        }))
+      particles.enable_initial_position();
     particles.sort_by_cell(grid->n_cells());
   }
 

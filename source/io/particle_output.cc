@@ -2,6 +2,7 @@
 #include <fsgmpm/io/particle_output.h>
 #include <fsgmpm/step/stages.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -11,7 +12,8 @@ namespace fsgmpm
   namespace
   {
     // Field layout: velocity (dim), stress xx yy zz xy [xz yz], pressure,
-    // mass, volume, material id, body id, free surface, vorticity.
+    // mass, volume, material id, body id, free surface, vorticity,
+    // projected pressure, von Mises stress, [displacement (dim)].
     constexpr unsigned int
     n_stress_components(const int dim)
     {
@@ -61,7 +63,9 @@ namespace fsgmpm
                                      const BackgroundGrid<dim> *grid,
                                      const NodalFields<dim>    *nodes)
   {
-    const unsigned int n_fields = dim + n_stress_components(dim) + 8;
+    with_displacement = particles.has_initial_position();
+    const unsigned int n_fields
+      = dim + n_stress_components(dim) + 9 + (with_displacement ? dim : 0);
     patches.resize(particles.size());
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
@@ -96,6 +100,15 @@ namespace fsgmpm
           fields = nodal_point_fields(*grid, *nodes, particles, p);
         patch.data(f++, 0) = fields[0];
         patch.data(f++, 0) = fields[1];
+        // q = sqrt(3 J2) of the whole (3 x 3, plane strain's sigma_zz
+        // included) stress: the soil's deviator stress.
+        const SymmetricTensor<2, 3> deviator
+          = s - trace(s) / 3. * unit_symmetric_tensor<3>();
+        patch.data(f++, 0) = std::sqrt(1.5 * (deviator * deviator));
+        if (with_displacement)
+          for (unsigned int d = 0; d < dim; ++d)
+            patch.data(f++, 0)
+              = particles.position[p][d] - particles.initial_position[p][d];
       }
   }
 
@@ -109,19 +122,25 @@ namespace fsgmpm
       for (unsigned int d = 0; d < dim; ++d)
         positions[3 * p + d] = patches[p].vertices[0][d];
     const auto                     names = get_dataset_names();
-    std::vector<XdmfSeries::Field> fields(1 + names.size() - dim);
-    fields[0] = {"velocity", 3, false, std::vector<double>(3 * n, 0.)};
-    for (unsigned int p = 0; p < n; ++p)
-      for (unsigned int d = 0; d < dim; ++d)
-        fields[0].values[3 * p + d] = patches[p].data(d, 0);
-    for (unsigned int f = dim; f < names.size(); ++f)
-      {
-        auto &field = fields[1 + f - dim];
-        field.name  = names[f];
-        field.values.resize(n);
-        for (unsigned int p = 0; p < n; ++p)
-          field.values[p] = patches[p].data(f, 0);
-      }
+    std::vector<XdmfSeries::Field> fields;
+    // The vectors (velocity, displacement) as 3-vectors, the rest scalars.
+    for (unsigned int f = 0; f < names.size();)
+      if (f + 1 < names.size() && names[f + 1] == names[f])
+        {
+          fields.push_back(
+            {names[f], 3, false, std::vector<double>(3 * n, 0.)});
+          for (unsigned int p = 0; p < n; ++p)
+            for (unsigned int d = 0; d < dim; ++d)
+              fields.back().values[3 * p + d] = patches[p].data(f + d, 0);
+          f += dim;
+        }
+      else
+        {
+          fields.push_back({names[f], 1, false, std::vector<double>(n)});
+          for (unsigned int p = 0; p < n; ++p)
+            fields.back().values[p] = patches[p].data(f, 0);
+          ++f;
+        }
     series.write(time, positions, XdmfSeries::CellType::vertex, {}, fields);
   }
 
@@ -146,8 +165,11 @@ namespace fsgmpm
                           "body_id",
                           "free_surface",
                           "vorticity",
-                          "projected_pressure"})
+                          "projected_pressure",
+                          "von_mises"})
       names.emplace_back(n);
+    if (with_displacement)
+      names.resize(names.size() + dim, "displacement");
     return names;
   }
 
@@ -159,11 +181,26 @@ namespace fsgmpm
                DataComponentInterpretation::DataComponentInterpretation>>
   ParticleOutput<dim>::get_nonscalar_data_ranges() const
   {
-    return {std::make_tuple(
-      0u,
-      dim - 1u,
-      std::string("velocity"),
-      DataComponentInterpretation::component_is_part_of_vector)};
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+      ranges = {std::make_tuple(
+        0u,
+        dim - 1u,
+        std::string("velocity"),
+        DataComponentInterpretation::component_is_part_of_vector)};
+    if (with_displacement)
+      {
+        const unsigned int first = get_dataset_names().size() - dim;
+        ranges.emplace_back(
+          first,
+          first + dim - 1,
+          std::string("displacement"),
+          DataComponentInterpretation::component_is_part_of_vector);
+      }
+    return ranges;
   }
 
 

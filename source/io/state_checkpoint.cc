@@ -17,6 +17,8 @@ namespace fsgmpm
       out.put_tensor_rows("particles/velocity", p.velocity);
       out.put("particles/has_affine_velocity", double(p.has_affine_velocity()));
       out.put_tensor_rows("particles/affine_velocity", p.affine_velocity);
+      if (p.has_initial_position())
+        out.put_tensor_rows("particles/initial_position", p.initial_position);
       out.put_tensor_rows("particles/stress", p.stress);
       out.put_rows("particles/mass", p.mass);
       out.put_rows("particles/volume", p.volume);
@@ -45,6 +47,17 @@ namespace fsgmpm
         p.enable_affine_velocity();
       p.affine_velocity
         = in.tensors<Tensor<2, dim>>("particles/affine_velocity");
+      if (in.has("particles/initial_position"))
+        {
+          if (!p.has_initial_position())
+            p.enable_initial_position();
+          p.initial_position
+            = in.tensors<Point<dim>>("particles/initial_position");
+        }
+      else if (p.has_initial_position())
+        // A checkpoint written without them: the displacement counts from
+        // the restart.
+        p.initial_position = p.position;
       p.stress = in.tensors<SymmetricTensor<2, 3>>("particles/stress");
       p.mass   = in.doubles("particles/mass");
       p.volume = in.doubles("particles/volume");
@@ -68,6 +81,10 @@ namespace fsgmpm
         AssertThrow(size == n,
                     ExcMessage("The checkpoint's point arrays differ in "
                                "length: it is damaged."));
+      AssertThrow(p.initial_position.size()
+                    == (p.has_initial_position() ? n : 0),
+                  ExcMessage("The checkpoint's initial positions do not "
+                             "match its points: it is damaged."));
       AssertThrow(p.affine_velocity.size() == (p.has_affine_velocity() ? n : 0),
                   ExcMessage("The checkpoint's affine velocities do not "
                              "match its points: it is damaged."));

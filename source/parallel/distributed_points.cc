@@ -19,7 +19,7 @@ namespace fsgmpm
       template <int dim>
       struct Record
       {
-        Point<dim>            position;
+        Point<dim>            position, initial_position;
         Tensor<1, dim>        velocity;
         Tensor<2, dim>        affine_velocity;
         SymmetricTensor<2, 3> stress;
@@ -41,6 +41,8 @@ namespace fsgmpm
         r.velocity = particles.velocity[p];
         if (particles.has_affine_velocity())
           r.affine_velocity = particles.affine_velocity[p];
+        if (particles.has_initial_position())
+          r.initial_position = particles.initial_position[p];
         r.stress           = particles.stress[p];
         r.mass             = particles.mass[p];
         r.volume           = particles.volume[p];
@@ -75,6 +77,8 @@ namespace fsgmpm
             particles.velocity.push_back(r.velocity);
             if (particles.has_affine_velocity())
               particles.affine_velocity.push_back(r.affine_velocity);
+            if (particles.has_initial_position())
+              particles.initial_position.push_back(r.initial_position);
             particles.stress.push_back(r.stress);
             particles.mass.push_back(r.mass);
             particles.volume.push_back(r.volume);
@@ -243,6 +247,8 @@ namespace fsgmpm
       cut(particles.velocity);
       if (particles.has_affine_velocity())
         cut(particles.affine_velocity);
+      if (particles.has_initial_position())
+        cut(particles.initial_position);
       cut(particles.stress);
       cut(particles.mass);
       cut(particles.volume);

@@ -36,6 +36,8 @@ namespace fsgmpm
       ghost.push_back(0);
     if (with_affine_velocity)
       affine_velocity.emplace_back();
+    if (with_initial_position)
+      initial_position.push_back(x);
   }
 
 
@@ -59,6 +61,18 @@ namespace fsgmpm
       ghost.reserve(n);
     if (with_affine_velocity)
       affine_velocity.reserve(n);
+    if (with_initial_position)
+      initial_position.reserve(n);
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::enable_initial_position()
+  {
+    with_initial_position = true;
+    initial_position      = position;
   }
 
 
@@ -228,6 +242,10 @@ namespace fsgmpm
          [this]() {
            if (with_affine_velocity)
              permute(affine_velocity);
+         },
+         [this]() {
+           if (with_initial_position)
+             permute(initial_position);
          }};
     parallel::apply_to_subranges(
       0u,
@@ -272,6 +290,8 @@ namespace fsgmpm
       shrink(ghost);
     if (with_affine_velocity)
       shrink(affine_velocity);
+    if (with_initial_position)
+      shrink(initial_position);
   }
 
 
@@ -365,7 +385,7 @@ namespace fsgmpm
     if (size() == 0)
       return 0;
     const double bytes
-      = position.capacity() * sizeof(Point<dim>)
+      = (position.capacity() + initial_position.capacity()) * sizeof(Point<dim>)
         + velocity.capacity() * sizeof(Tensor<1, dim>)
         + affine_velocity.capacity() * sizeof(Tensor<2, dim>)
         + stress.capacity() * sizeof(SymmetricTensor<2, 3>)

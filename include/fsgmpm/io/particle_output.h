@@ -74,6 +74,9 @@ namespace fsgmpm
     get_nonscalar_data_ranges() const override;
 
     std::vector<DataOutBase::Patch<0, dim>> patches;
+    /// Whether the points keep their initial positions (a displacement
+    /// field follows the others).
+    bool with_displacement = false;
   };
 
   /**

@@ -79,6 +79,23 @@ namespace fsgmpm
     void
     enable_affine_velocity();
 
+    /**
+     * Switch on the points' initial positions (for the displacement in the
+     * output): from now on every point keeps where it was when this was
+     * called (its position now; a point added later, where it is added).
+     * Scenes with a solid body switch it on; pure water, whose
+     * displacement means little, saves the memory.
+     */
+    void
+    enable_initial_position();
+
+    /// Whether the points keep their initial positions.
+    bool
+    has_initial_position() const
+    {
+      return with_initial_position;
+    }
+
     /// Whether the points carry an affine velocity (APIC transfers).
     bool
     has_affine_velocity() const
@@ -189,8 +206,11 @@ namespace fsgmpm
     /// velocity field, v(x) = v_p + C_p (x - x_p) within its cell.
     std::vector<Tensor<2, dim>>        affine_velocity;
     std::vector<SymmetricTensor<2, 3>> stress;
-    std::vector<double>                mass;
-    std::vector<double>                volume;
+    /// Where each point was at the start (empty unless
+    /// enable_initial_position()): the displacement is position minus it.
+    std::vector<Point<dim>> initial_position;
+    std::vector<double>     mass;
+    std::vector<double>     volume;
     /// Reference volume: the volume at zero pressure (fluids: m/rho_ref),
     /// so that J = V/V_ref is the deformation state of Eq. (16).
     std::vector<double>        reference_volume;
@@ -220,7 +240,8 @@ namespace fsgmpm
     void
     permute(std::vector<T> &v) const;
 
-    bool with_affine_velocity = false;
+    bool with_affine_velocity  = false;
+    bool with_initial_position = false;
     /// Per cell: its slot, or invalid_slot (4 B per cell, where a begin
     /// and an end per cell took 8).
     std::vector<unsigned int> slot_of_cell;
