@@ -1073,7 +1073,7 @@ namespace fsgmpm
     // its points there.
     if (partition)
       MPI_Barrier(partition->get_communicator());
-    // Common columns (SPEC 6), the free-surface fraction where a body
+    // Common columns, the free-surface fraction where a body
     // detects free surfaces, then the scene's own columns.
     bool detecting = false;
     for (const auto &o : material_options)

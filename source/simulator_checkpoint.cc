@@ -1,5 +1,5 @@
 /**
- * Checkpoint and restart of a Simulator (issue 15, section 2): the whole
+ * Checkpoint and restart of a Simulator (doc/checkpoint_and_hdf5.md): the whole
  * state in one HDF5 file per checkpoint, written atomically, the last two
  * kept; a restarted run continues bit for bit as the uninterrupted one.
  */

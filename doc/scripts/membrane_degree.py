@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Membrane elements of degree 1 and 2 on the geotube (issue 17,
-doc/membrane_validation.md, "Quadratic membrane elements").
+"""Membrane elements of degree 1 and 2 on the geotube
+(doc/membrane_validation.md, "Quadratic membrane elements").
 
 Usage: membrane_degree.py FSGMPM SOURCE_DIR WORK_DIR [--jobs 2] [--fine]
 

@@ -1,12 +1,12 @@
 #!/bin/bash
-# Cost of checkpoints with MPI (issue 15 §2): the 2D dam break at 960 x 400
-# squares (409 600 points), 10 steps with a checkpoint after every step,
-# one thread per process; then a restart from the last checkpoint for one
-# more step. For each number of processes: the time spent writing
-# checkpoints (summary.json's checkpoint_seconds, rank 0's, which includes
-# waiting for the other processes), the checkpoint's size, the largest
-# resident memory of each process in the run and in the restart, and the
-# restart's wall time (setup and reading included).
+# Cost of checkpoints with MPI (doc/checkpoint_and_hdf5.md): the 2D dam break
+# at 960 x 400 squares (409 600 points), 10 steps with a checkpoint after every
+# step, one thread per process; then a restart from the last checkpoint for one
+# more step. For each number of processes: the time spent writing checkpoints
+# (summary.json's checkpoint_seconds, rank 0's, which includes waiting for the
+# other processes), the checkpoint's size, the largest resident memory of each
+# process in the run and in the restart, and the restart's wall time (setup and
+# reading included).
 # Usage: mpi_checkpoint_cost.sh <fsgmpm> <source dir> [processes...]
 set -u
 exe=$1

@@ -1,6 +1,6 @@
 #!/bin/bash
-# Collective MPI calls per step (issue 15 §1: each one costs a latency that
-# grows with log P; doc/mpi.md). Builds doc/scripts/mpi_collective_count.c
+# Collective MPI calls per step (each one costs a latency that grows with
+# log P: doc/mpi.md). Builds doc/scripts/mpi_collective_count.c
 # with mpicc, preloads it into fsgmpm on 2 processes, runs the default dam
 # break for 50 and for 150 steps without output, and prints the calls per
 # step (the difference over 100 steps: setup and the end of the run drop

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Cost of the point output with MPI (issue 15 §2): the 2D dam break at
+# Cost of the point output with MPI (doc/mpi.md): the 2D dam break at
 # 960 x 400 squares (409 600 points), 20 steps, the points written every 5
 # steps (5 files), one thread per process; for each format and number of
 # processes the output stage's time (rank 0's stage_seconds.output, which

@@ -137,7 +137,7 @@ namespace fsgmpm
         elements.insert(elements.end(), e.begin(), e.end());
       out.put("membrane/elements", elements);
       out.put("membrane/rest_size", m.rest_size);
-      // The rest structure of the finite elements (issue 17).
+      // The rest structure of the membrane's finite elements.
       out.put("membrane/element_degree", double(m.properties.element_degree));
       std::vector<double> rest_vertex;
       for (const auto &x : m.rest_vertex)

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Issue 16: a tutorial copied out of the tree builds against an installed
+# A tutorial copied out of the tree builds against an installed
 # fsgmpm. Installs the build into a temporary prefix (cmake --install),
 # copies doc/tutorials/step-1 to a temporary directory, configures and builds
 # it with its own CMakeLists.txt against the installed package only, runs it at

@@ -1,5 +1,5 @@
 #!/bin/bash
-# MPI runs reproduce the serial run (issue 15 §1): each scene runs STEPS
+# MPI runs reproduce the serial run (doc/mpi.md): each scene runs STEPS
 # steps on one process and with mpirun on 2 and 3 processes (3 oversubscribes
 # a 2-core machine), monitors every step, particles written every 50 steps;
 # compare_monitors.py compares every column of monitors.csv with the serial

@@ -3,7 +3,7 @@
 // stock ParticleHandler with MappingFE doing the same relocation and
 // P2G/G2P (the step-19/step-70 pattern: FEValues at the particles' reference
 // locations, cell by cell). The baseline is a speed reference only: deal.II
-// 9.4 mislocates particles on simplices (SPEC 4).
+// 9.4 mislocates particles on simplices (doc/foundation_validation.md).
 //
 // Usage: benchmark [steps] [filter]: runs the cases whose name contains
 // filter (all by default), each for the given number of timed steps (50).
@@ -19,7 +19,7 @@
 // point: also the allocator's slack. (The grid keeps no deal.II mesh; the
 // baseline builds its own, after both are measured.)
 //
-// The membrane (issue 17): the geotube cases time the membrane's share of
+// The membrane: the geotube cases time the membrane's share of
 // the step (stage "membrane"), slip at degree 1 as shipped and no-slip at
 // degrees 1 and 2 with the same nodes; membrane_forces_2d/3d time the
 // element forces of MembraneFE against the hand-written cables and
@@ -64,8 +64,8 @@ namespace
     return std::chrono::duration<double>(Clock::now() - t0).count();
   }
 
-  // The 2D dam break of SPEC 4 at 102 400 points: fluid with NMD + ANP +
-  // free-surface detection, in a tank mostly empty at the start.
+  // The 2D dam break of doc/performance.md at 102 400 points: fluid with
+  // NMD + ANP + free-surface detection, in a tank mostly empty at the start.
   std::string
   dam_break_scene()
   {
@@ -95,8 +95,8 @@ end
 
   // The same water column in a tank of 10 times the area (sqrt(10) times
   // the width and height) at the same cell size: work should follow the
-  // material, not the mesh (issue 15: at most 1.3 times the time per step
-  // of dam_break_2d).
+  // material, not the mesh (the aim in doc/performance.md: at most 1.3
+  // times the time per step of dam_break_2d).
   std::string
   dam_break_scene_wide_tank()
   {
@@ -545,7 +545,7 @@ main(int argc, char **argv)
       const unsigned int steps    = (argc > 1) ? std::stoi(argv[1]) : 50;
       case_filter                 = (argc > 2) ? argv[2] : "";
       const double block_baseline = run_case<2>("elastic_block_2d", steps);
-      // The internal force from the nodal stress projection (issue 14):
+      // The internal force from the nodal stress projection:
       // the second pass over the cells and the per-point strain rate.
       const std::string projection = "subsection Simulation\n"
                                      "  set Stress integration = nodal "
@@ -591,7 +591,7 @@ main(int argc, char **argv)
       run_case<3>("dam_break_3d",
                   std::max(2u, steps / 2),
                   dam_break_scene_3d());
-      // The membrane (issue 17): the geotube as shipped (slip, degree 1),
+      // The membrane: the geotube as shipped (slip, degree 1),
       // and the paper's no-slip coupling at degree 1 (elements of 0.9
       // cells) and 2 (cells of 1.8 grid cells: the same nodes).
       const std::string no_slip

@@ -1,5 +1,5 @@
 // What the vector unit gives the time step's per-point arithmetic alone
-// (doc/performance.md, stop 55): the signal speed
+// (doc/performance.md, "What the vector unit gives"): the signal speed
 //   s_p = sqrt(K / rho_p) + |v_p| + 4 nu / (rho_p h_p),  rho_p = m_p / V_p,
 // and its maximum over 102 400 points (the 2D benchmark's count), three
 // ways in one run: scalar (vectorisation switched off), SSE2 (the

@@ -1,5 +1,5 @@
 // Bodies that fill around one another, and the geostatic stress under a
-// sloped or curved top (issue 12).
+// sloped or curved top.
 // (1) Fill order: a body leaves out the regions of the bodies listed before
 // it. A water tank (1 x 0.8 m) listed after a 0.4 x 0.4 m block inside it
 // holds 0.64 m^2, the block 0.16 m^2, together the tank's 0.8 m^2 to

@@ -120,7 +120,7 @@ TEST(ElasticBarVibration, TetrahedraMUSL)
   run_bar<3>("MUSL");
 }
 
-// The internal force from the nodal stress projection (issue 14).
+// The internal force from the nodal stress projection.
 TEST(ElasticBarVibration, TrianglesMUSLNodalProjection)
 {
   run_bar<2>("MUSL", "nodal projection");

@@ -161,7 +161,7 @@ end
                "kinetic damping, gravity ramp 0.02 s");
 }
 
-// The internal force from the nodal stress projection (issue 14) reaches
+// The internal force from the nodal stress projection reaches
 // equilibrium as fast, but the points' stresses are those whose nodal
 // projection is in equilibrium: measured worst layer sigma_yy error 4.4%
 // (points: 0.43%) and lateral ratio 1.1% (points: 5e-4%), from the

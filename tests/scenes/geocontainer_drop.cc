@@ -1,4 +1,4 @@
-// Geocontainer drop, coarse (issue 12): prm/geocontainer_polygon.prm and
+// Geocontainer drop, coarse: prm/geocontainer_polygon.prm and
 // prm/geocontainer_ellipse.prm at 4 cm cells as shipped (weakly
 // compressible water K = 2.13e7 Pa, FLIP noise relaxation 0.01 s toward
 // XPIC(4), the

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The geocontainer doc figures' scripts run on real output (issue 12):
+# The geocontainer doc figures' scripts run on real output:
 # a 4 cm polygon drop for 0.05 s with output every 0.01 s, then
 # doc/scripts/plot_geocontainer.py and plot_geocontainer_snapshots.py must
 # each write a non-empty PNG; doc/scripts/water_compaction.py must find

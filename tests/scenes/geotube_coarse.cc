@@ -1,4 +1,4 @@
-// Coarse geotube (issue 5): prm/geotube_A5.56.prm at 16 cm cells with the
+// Coarse geotube: prm/geotube_A5.56.prm at 16 cm cells with the
 // quasi-static weakly compressible fluid (K_f = 2.7e7 Pa: p_max/K_f = 1e-3),
 // 16 points per cell, relaxed for 8 s of simulated time (dynamic relaxation
 // with directional mass scaling, the slip-consistent loop stiffness, and
@@ -12,8 +12,9 @@
 // own measured enclosed area and membrane length (the solver's error); the
 // error against the nominal 5.56 m^2 and 9.2 m (the user's error) is
 // printed.
-// Asserts (issue 13: tolerances a few times the measured errors, not the
-// issue's acceptance aims, so that a change of a few per cent shows):
+// Asserts (tolerances a few times the measured errors, not the validation
+// criteria of doc/membrane_validation.md, so that a change of a few per
+// cent shows):
 // 2D: H/W within 0.004 of the analytic value for the measured area and
 // length (measured -0.0013 with the damped time-step bound, -0.0002
 // before) and within 0.008 of the nominal 5.56 m^2, 9.2 m one (measured
@@ -256,7 +257,7 @@ TEST(GeotubeCoarseValidation, NoSlipMatchesAnalytic)
 }
 
 // Quadratic membrane elements with the slip (MembraneSlip::
-// relax_tangential_forces; issue 17), validation entries: the 2D geotube
+// relax_tangential_forces), validation entries: the 2D geotube
 // (degree 2, 12.8 cm cells, so the same node spacing as degree 1; 12 s,
 // averaged from 8 s; 60 s wall) and the 3D slab (6 s, from 4 s; 170 s).
 // Measured (doc/membrane_validation.md, "Quadratic membrane elements"):
@@ -315,7 +316,7 @@ TEST(GeotubeCoarseValidation, ConvergesByEq30)
   expect_pressures(m, ref, 0.1);
 }
 
-// --- The 3D slab's membrane read from Gmsh (issue 17) ---------------------
+// --- The 3D slab's membrane read from Gmsh --------------------------------
 namespace
 {
   // The 3D slab, no-slip (the paper's coupling; slip is chord-based, degree

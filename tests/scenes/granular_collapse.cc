@@ -1,4 +1,4 @@
-// Granular column collapse (issue 4): prm/granular_column_collapse.prm
+// Granular column collapse: prm/granular_column_collapse.prm
 // (rho = 1500 kg/m^3, E = 5 MPa, nu = 0.3, phi = 30 deg, psi = 0, c = 0,
 // Coulomb base mu_b = tan 30 deg, L0 = 0.2 m = 20 cells, 4 points per cell,
 // APIC transfers) in a domain long enough for the run-out, at a = 1 and

@@ -1,4 +1,4 @@
-// Volumetric locking (issue 13): a nearly incompressible linear elastic
+// Volumetric locking: a nearly incompressible linear elastic
 // square (nu = 0.4999, K/G = 5000; plane strain, 16 x 16 cells of
 // triangles, 4 points per cell, no gravity) in a box of roller walls,
 // started with the velocity of its first divergence-free (vortex) mode

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Every scene shipped in prm/ runs as shipped (issue 13, section 3). The
+# Every scene shipped in prm/ runs as shipped (doc/stability.md). The
 # files are found by globbing, so a new scene is covered automatically.
 #
 # Default run (mode "short"): each scene runs its first 0.2 s of simulated

@@ -1,4 +1,4 @@
-// Stability at the extremes (issue 13, section 2; SPEC 5): each case runs a
+// Stability at the extremes (doc/stability.md): each case runs a
 // small scene at an extreme of the parameters with the automatic time step
 // (Courant 0.5 unless stated) and asserts that the run either
 //  - completes (end_time, or max_steps: its step limit) with bounded
@@ -552,10 +552,10 @@ end
 
 
 // Real water in a membrane: the shipped geotube_A3.36 (8 cm, K_f = 2.13 GPa,
-// Courant 0.5) for 6000 steps (0.1 s). With the time step before issue 13
-// (the membrane's nodal bound without the points' stiffness, commit
-// f98da97) it stopped as unstable at step 4543: the nearly empty grid nodes
-// the membrane touches at the lower corners (doc/stability.md).
+// Courant 0.5) for 6000 steps (0.1 s). With the former time-step bound
+// (the membrane's nodal bound without the points' stiffness) it stopped as
+// unstable at step 4543: the nearly empty grid nodes the membrane touches
+// at the lower corners (doc/stability.md).
 TEST(StabilityExtremes, RealWaterGeotube)
 {
   auto prm = test_tools::make_parameters_from_scene("geotube_A3.36.prm");

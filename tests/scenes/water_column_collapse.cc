@@ -9,7 +9,7 @@
 // front RMS <= 0.1 after the best constant delay of the simulation, which
 // must be at most 30 ms (the experiment's gate, not modelled, delays its
 // start); the delay and the unshifted RMS are reported.
-// Validation (label validation): the criterion without shift, front
+// Validation (label validation): the criterion without shift, front
 // RMS <= 0.3. Measured 0.306-0.321 over mesh, particles per cell, Courant
 // number and f_c (doc/water_validation.md): the model without a gate leads
 // the experiment; this test documents that and fails until it is resolved.

@@ -129,7 +129,7 @@ TEST(WaterCompaction, StabilisedOrCappedWeightsKeepTheCloudsVolume)
   EXPECT_NEAR(stabilised.volume, 1.6, 0.016);
 }
 
-// The nodal stress projection (issue 14; no NMD or ANP with it): the cloud
+// The nodal stress projection (no NMD or ANP with it): the cloud
 // does not pack (measured 0.961: it spreads a little, as without any
 // smoothing, 0.944), and in the geocontainer the water keeps its volume
 // without locking (doc/accuracy_vs_cost.md).

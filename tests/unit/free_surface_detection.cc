@@ -1,4 +1,4 @@
-// Free-surface detection in the volume-fraction form (SPEC 2, paper
+// Free-surface detection in the volume-fraction form (paper
 // Eqs. 31-33, f_c = 0.6), checked on the initial state of fluid bodies:
 // (a) a column whose surface lies on a grid line has no flagged point;
 // (b) with the surface at half a cell, flags appear only in the top cell

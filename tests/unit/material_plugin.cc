@@ -1,4 +1,4 @@
-// Material models are plug-ins (issue 16): a program registers its own
+// Material models are plug-ins: a program registers its own
 // model in its own source file with FSGMPM_REGISTER_MATERIAL, and a body
 // selects it by name. This file registers "test elastic", a linear elastic
 // material that counts its stress updates and reads its constants from its

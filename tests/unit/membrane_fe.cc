@@ -1,4 +1,4 @@
-// The membrane on deal.II's FE machinery (MembraneFE, issue 17, first part)
+// The membrane on deal.II's FE machinery (MembraneFE)
 // against the hand-written elements (MembraneMechanics) and patch tests:
 // (a) degree 1 gives the hand-written cables' (2D ring) and triangles' (3D
 // curved patch) nodal forces for a general deformation (measured: 2D

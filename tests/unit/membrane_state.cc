@@ -1,4 +1,4 @@
-// Membrane state operations (issue 5), no grid but in (7):
+// Membrane state operations, no grid but in (7):
 // (1) splitting: a closed loop stretched beyond the split length is split
 //     until every cable is short enough, with the total mass, the total rest
 //     length and the tension of every piece unchanged (the strain of a piece
@@ -516,7 +516,7 @@ TEST(MembraneState, TriangleStiffnessBoundsTheTimeStep)
     }
 }
 
-// Issue 17: the Membrane's elements are MembraneFE. (a) Degree 1: the nodal
+// The Membrane's elements are MembraneFE. (a) Degree 1: the nodal
 // forces of a deformed ring equal the hand-written cables' (MembraneMechanics,
 // the reference kept for this test) to round-off (measured 5.7e-15 of the
 // largest force; asserted 1e-13), and the cable tensions too.

@@ -1,5 +1,5 @@
 // Mohr-Coulomb material point (prescribed velocity gradient, no grid)
-// against closed-form answers (issue 4): (i) triaxial and plane-strain
+// against closed-form answers: (i) triaxial and plane-strain
 // compression reach the Mohr-Coulomb limit within 0.5%; (ii) the plastic
 // volumetric strain follows psi; (iii) a stressed point under rigid
 // rotation keeps its principal stresses to 1e-8 over a full turn; (iv) a

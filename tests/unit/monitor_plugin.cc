@@ -1,4 +1,4 @@
-// Scene monitors are plug-ins (issue 16), as materials and body shapes are:
+// Scene monitors are plug-ins, as materials and body shapes are:
 // a program registers its own monitor in its own source file with
 // FSGMPM_REGISTER_MONITOR and selects it by name in Monitors/Scene
 // monitors, beside the built-in ones. This file registers "total_mass", the

@@ -428,9 +428,10 @@ TEST(GridNeighbours, AsDealIIsNeighbours)
 
 
 
-// The case deal.II 9.4's stock sort gets wrong (SPEC 4): points on a
-// triangulated square rotated slowly and re-located by walking from their
-// previous cell every step must always be in a cell that contains them.
+// The case deal.II 9.4's stock sort gets wrong (doc/foundation_validation.md):
+// points on a triangulated square rotated slowly and re-located by walking
+// from their previous cell every step must always be in a cell that contains
+// them.
 TEST(PointLocation, SlowRotationWalk)
 {
   Triangulation<2> tria;

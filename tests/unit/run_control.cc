@@ -1,4 +1,4 @@
-// The run-control pieces of a Simulator, each used alone (issue 16):
+// The run-control pieces of a Simulator, each used alone:
 // - TimeStepControl: the automatic step is the stages' stable step; a fixed
 //   step is taken when stable and refused, naming the parameter, when not;
 //   the last step lands on the end time exactly; dt_min (the steps as

@@ -1,4 +1,4 @@
-// Body shapes are plug-ins (issue 16), as materials are: a program
+// Body shapes are plug-ins, as materials are: a program
 // registers its own shape in its own source file with FSGMPM_REGISTER_SHAPE
 // and a body selects it by name. This file registers "annulus" (2D; its 3D
 // create refuses with a clear error), which declares and reads its own

@@ -1,6 +1,6 @@
 // The internal force of Eq. (3) integrated at the points and from the nodal
 // stress projection (Simulation/Stress integration), on distorted triangles
-// and tetrahedra (issue 14):
+// and tetrahedra:
 // - the linear shape functions both use: partition of unity and linear
 //   completeness of N and grad N on every distorted cell, to 1e-12;
 // - where every occupied cell holds points whose volume-weighted centroid is

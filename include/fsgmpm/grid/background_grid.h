@@ -83,7 +83,7 @@ namespace fsgmpm
      * bit for bit. A face towards a cell outside the window has no
      * neighbour and is not a boundary face. The size of a window is that of
      * the process's share of the mesh, not of the mesh (the road to a grid
-     * that no process holds whole, doc/mpi_plan.md).
+     * that no process holds whole: doc/mpi.md, "Grid windows").
      *
      * @p cells are cells of the first velocity field; a grid with several
      * fields gives a window with as many, each holding the same cells. The

@@ -20,8 +20,8 @@ namespace fsgmpm
   using namespace dealii;
 
   /**
-   * The membrane's internal forces on deal.II's finite-element machinery
-   * (issue 17): FE_SimplexP of
+   * The membrane's internal forces on deal.II's finite-element machinery:
+   * FE_SimplexP of
    * degree 1 or 2 on the membrane's codim-1 triangulation (cables: lines in
    * 2D; surfaces: triangles in 3D), total Lagrangian on the rest geometry,
    * forces by FEValues quadrature. The node values are the current

@@ -6,7 +6,7 @@
 namespace fsgmpm
 {
   /**
-   * Scene monitor "dam_break" (SPEC 3.3), both from the non-flagged points:
+   * Scene monitor "dam_break", both from the non-flagged points:
    * - front_position: largest x - x_wall of the points in the bottom cell
    *   row, plus half a point spacing (V_p^(1/dim));
    * - column_height: largest y - y_base of the points within one cell of the

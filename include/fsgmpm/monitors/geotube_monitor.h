@@ -12,7 +12,7 @@
 namespace fsgmpm
 {
   /**
-   * Geotube monitors (issue 5, SPEC 6): height and width (max - min of the
+   * Geotube monitors: height and width (max - min of the
    * membrane nodes), contact_width (extent of the nodes within
    * @p contact_tolerance of the lowest node), max_tension and mean_tension
    * (length-weighted), top_pressure and bottom_pressure (a least-squares line

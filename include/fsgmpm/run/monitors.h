@@ -6,7 +6,8 @@
 
 namespace fsgmpm
 {
-  /// Global quantities monitored every step (common columns of SPEC 6).
+  /// Global quantities monitored every step (the common columns of
+  /// monitors.csv).
   struct Monitors
   {
     double       kinetic_energy    = 0; ///< sum_p m_p |v_p|^2 / 2

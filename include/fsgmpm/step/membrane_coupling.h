@@ -70,7 +70,7 @@ namespace fsgmpm
     void
     p2g(NodalFields<dim> &nodes);
 
-    /// Nodal time-step bound of SPEC 2 with the membrane: min over the grid
+    /// Nodal time-step bound with the membrane: min over the grid
     /// nodes the membrane touches and over directions of 2 sqrt(m_i / k),
     /// k an eigenvalue of the block Gershgorin bound of the stiffness at
     /// node i: the membrane's, projected to the node, plus the material
