@@ -8,7 +8,8 @@ For each run, reads the last particles_*.vtu of RUN_DIR and draws the
 deposit surface (the highest point top, y + half a point spacing, in bins
 of width --bin along x), with the initial column (from particles_00000.vtu)
 dashed. Prints the run-out (monitor runout, last row of monitors.csv) and
-(L - L0)/L0. Uses Debian's /usr/bin/python3 with python3-matplotlib and
+(L - L0)/L0. doc/scripts/plot.py RUN_DIR calls plot() for a deposit
+run. Uses Debian's /usr/bin/python3 with python3-matplotlib and
 python3-numpy.
 """
 import argparse
@@ -40,33 +41,29 @@ def last_runout(run_dir):
         else float("nan")
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("output")
-    parser.add_argument("runs", nargs="+")
-    parser.add_argument("--L0", type=float, default=0.2)
-    parser.add_argument("--bin", type=float, default=0.01)
-    args = parser.parse_args()
-
+def plot(output, runs, L0=0.2, bin_width=0.01, out=sys.stdout):
+    """Draw the deposit surfaces of the runs [(run_dir, label), ...] into
+    output (a PNG path) and print each run-out to out. Raises
+    FileNotFoundError for a run without particles_*.vtu."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(9, 3.5))
-    for run in args.runs:
-        run_dir, _, label = run.partition(":")
-        label = label or os.path.basename(run_dir.rstrip("/"))
+    for run_dir, label in runs:
+        label = label or os.path.basename(os.path.normpath(run_dir))
         files = particle_files(run_dir)
         if not files:
-            sys.exit("plot_deposit.py: no particles_*.vtu in " + run_dir)
-        edges, heights = surface(files[-1], args.bin)
+            plt.close(fig)
+            raise FileNotFoundError("no particles_*.vtu in " + run_dir)
+        edges, heights = surface(files[-1], bin_width)
         runout = last_runout(run_dir)
         print("%s: run-out %.4f m, (L - L0)/L0 = %.3f"
-              % (label, runout, (runout - args.L0) / args.L0))
+              % (label, runout, (runout - L0) / L0), file=out)
         line, = ax.step(edges[:-1], heights, where="post",
                         label="%s ((L-L0)/L0 = %.2f)"
-                        % (label, (runout - args.L0) / args.L0))
-        edges0, heights0 = surface(files[0], args.bin)
+                        % (label, (runout - L0) / L0))
+        edges0, heights0 = surface(files[0], bin_width)
         ax.step(edges0[:-1], heights0, where="post", ls="--", lw=0.8,
                 color=line.get_color())
     ax.set_xlabel("x from the back wall (m)")
@@ -74,7 +71,25 @@ def main():
     ax.set_aspect("equal")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=120)
+    fig.savefig(output, dpi=120)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("output")
+    parser.add_argument("runs", nargs="+")
+    parser.add_argument("--L0", type=float, default=0.2)
+    parser.add_argument("--bin", type=float, default=0.01)
+    args = parser.parse_args()
+    runs = []
+    for run in args.runs:
+        run_dir, _, label = run.partition(":")
+        runs.append((run_dir, label))
+    try:
+        plot(args.output, runs, args.L0, args.bin)
+    except FileNotFoundError as e:
+        sys.exit("plot_deposit.py: %s" % e)
 
 
 if __name__ == "__main__":

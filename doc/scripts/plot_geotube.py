@@ -6,8 +6,9 @@ Usage: plot_geotube.py <geotube_shape executable> <out.png> <nominal area>
 Each run directory holds membrane_shape.csv and monitors.csv (the last row
 gives the enclosed area and membrane length). The analytic shapes are for
 the nominal circumference 9.2 m and area (black), and for each run's
-measured area and length (dashed). Debian's python3 with
-matplotlib.
+measured area and length (dashed). doc/scripts/plot.py RUN_DIR calls
+plot() for a geotube run (without the executable it draws the run's shape
+alone). Debian's python3 with matplotlib.
 """
 import csv
 import subprocess
@@ -30,25 +31,31 @@ def analytic(exe, length, area):
     return [p[0] for p in xy] + [xy[0][0]], [p[1] for p in xy] + [xy[0][1]]
 
 
-def main():
-    exe, png, area, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+def plot(exe, png, area, runs, circumference=9.2):
+    """Draw the final shapes of the runs [(label, directory), ...] into png,
+    with the analytic shapes of tests/reference/geotube_shape (exe; None:
+    the runs' shapes alone) for the nominal circumference and area and for
+    each run's own."""
     fig, ax = plt.subplots(figsize=(9, 5))
-    nx, ny = analytic(exe, 9.2, area)
-    ax.plot(nx, ny, "k-", lw=1.6, label="analytic, nominal A = %s m$^2$" % area)
-    for k, run in enumerate(runs):
-        label, directory = run.split(":", 1)
-        with open(directory + "/membrane_shape.csv") as f:
+    if exe:
+        nx, ny = analytic(exe, circumference, area)
+        ax.plot(nx, ny, "k-", lw=1.6,
+                label="analytic, nominal A = %s m$^2$" % area)
+    for label, directory in runs:
+        with open(os.path.join(directory, "membrane_shape.csv")) as f:
             xy = [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
-        with open(directory + "/monitors.csv") as f:
+        with open(os.path.join(directory, "monitors.csv")) as f:
             last = list(monitors_csv.DictReader(f))[-1]
         xc = 0.5 * (min(p[0] for p in xy) + max(p[0] for p in xy))
         x = [p[0] - xc for p in xy] + [xy[0][0] - xc]
         y = [p[1] for p in xy] + [xy[0][1]]
         line, = ax.plot(x, y, "-", lw=1.2, label=label)
-        ax_, ay_ = analytic(exe, last["membrane_length"], last["enclosed_area"])
-        ax.plot(ax_, ay_, "--", lw=0.8, color=line.get_color(),
-                label="analytic, measured A = %.3f m$^2$"
-                % float(last["enclosed_area"]))
+        if exe:
+            ax_, ay_ = analytic(exe, last["membrane_length"],
+                                last["enclosed_area"])
+            ax.plot(ax_, ay_, "--", lw=0.8, color=line.get_color(),
+                    label="analytic, measured A = %.3f m$^2$"
+                    % float(last["enclosed_area"]))
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
@@ -56,6 +63,12 @@ def main():
     ax.grid(lw=0.3)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    exe, png, area, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+    plot(exe, png, area, [tuple(run.split(":", 1)) for run in runs])
 
 
 if __name__ == "__main__":
