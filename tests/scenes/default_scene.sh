@@ -83,5 +83,5 @@ cmp out/monitors.csv out3/monitors.csv
 grep -q "out3 holds the results of an earlier run" rerun.err
 # The rerun's log replaces the earlier run's.
 cmp rerun.err out3/log.txt
-! ls out/*.tmp.* 2>/dev/null
+test -z "$(ls out/*.tmp.* 2>/dev/null)"
 echo "default scene: 1 passed, 0 failed"

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Bad input, fuzzed (issue 13, section 4).
+"""Bad input, fuzzed (doc/stability.md, "Bad input, fuzzed").
 
 Takes every parameter that `fsgmpm --print-parameters` prints and, one at a
 time, gives it hostile values chosen from the type in its "allowed:" line
