@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/materials/linear_elastic.h>
 #include <fsgmpm/materials/material_factory.h>
 
@@ -22,11 +23,11 @@ namespace fsgmpm
     prm.enter_subsection("Linear elastic");
     prm.declare_entry("Young's modulus",
                       "1e6",
-                      Patterns::Double(0, 1e13),
+                      RealInterval::above(0, 1e13),
                       "Young's modulus E in Pa (> 0, at most 1e13).");
     prm.declare_entry("Poisson's ratio",
                       "0.3",
-                      Patterns::Double(-1, 0.5),
+                      RealInterval(-1, 0.5, true, true),
                       "Poisson's ratio nu, -1 < nu < 0.5 (0.5, the "
                       "incompressible limit, is not allowed in an explicit "
                       "code).");

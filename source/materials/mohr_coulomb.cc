@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/materials/hill_rotation.h>
 #include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/materials/mohr_coulomb.h>
@@ -47,19 +48,19 @@ namespace fsgmpm
     prm.enter_subsection("Mohr-Coulomb");
     prm.declare_entry("Young's modulus",
                       "5e6",
-                      Patterns::Double(0, 1e13),
+                      RealInterval::above(0, 1e13),
                       "Young's modulus E in Pa (> 0, at most 1e13).");
     prm.declare_entry("Poisson's ratio",
                       "0.3",
-                      Patterns::Double(-1, 0.5),
+                      RealInterval(-1, 0.5, true, true),
                       "Poisson's ratio, -1 < nu < 0.5.");
     prm.declare_entry("Friction angle",
                       "30",
-                      Patterns::Double(0, 90),
+                      RealInterval(0, 90, false, true),
                       "phi in degrees, 0 <= phi < 90.");
     prm.declare_entry("Dilatancy angle",
                       "0",
-                      Patterns::Double(0, 90),
+                      RealInterval(0, 90, false, true),
                       "psi in degrees, 0 <= psi <= phi.");
     prm.declare_entry("Cohesion",
                       "0",
@@ -67,7 +68,7 @@ namespace fsgmpm
                       "c in Pa (>= 0, at most 1e13).");
     prm.declare_entry("Maximum volume ratio",
                       "1.2",
-                      Patterns::Double(1, 1e6),
+                      RealInterval::above(1, 1e6),
                       "Cap on a point's volume ratio V/V0 (> 1, at most "
                       "1e6): points "
                       "that come apart at the apex (tension) stop growing "

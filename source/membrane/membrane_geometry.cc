@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/io/gmsh_surface.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_shape.h>
@@ -247,7 +248,7 @@ namespace fsgmpm
                         "below it. none: no ground.");
       prm.declare_entry("Ground stiffness",
                         "1e7",
-                        Patterns::Double(0, 1e15),
+                        RealInterval::above(0, 1e15),
                         "Penalty stiffness of the ground per metre of a "
                         "membrane node's width (N/m^2, at most 1e15; the "
                         "width is 1 m of depth in 2D and the square root of "
@@ -257,20 +258,20 @@ namespace fsgmpm
                         "bottom pressure times the element size / k.");
       prm.declare_entry("Axial stiffness",
                         "5e7",
-                        Patterns::Double(0, 1e12),
+                        RealInterval::above(0, 1e12),
                         "EA = E * thickness (N/m, at most 1e12).");
       prm.declare_entry("Poisson ratio",
                         "0.3",
-                        Patterns::Double(-1, 1),
+                        RealInterval(-1, 1, true, true),
                         "In-plane Poisson ratio (3D), in (-1, 1).");
       prm.declare_entry("Initial strain",
                         "0",
-                        Patterns::Double(-0.5, 1),
+                        RealInterval(-0.5, 1, true, true),
                         "Pre-strain eps0: the rest length is the initial "
                         "length / (1 + eps0); > 0 starts in tension.");
       prm.declare_entry("Areal mass",
                         "0.5",
-                        Patterns::Double(0, 1e4),
+                        RealInterval::above(0, 1e4),
                         "Mass per membrane area (kg/m^2, > 0, at most 1e4).");
       prm.declare_entry("Element degree",
                         "1",

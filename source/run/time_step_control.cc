@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/run/time_step_control.h>
 
@@ -16,7 +17,7 @@ namespace fsgmpm
     {
       prm.declare_entry("End time",
                         "0.6",
-                        Patterns::Double(0),
+                        RealInterval::above(0),
                         "Simulated time at which the run stops (s, > 0).");
       prm.declare_entry("Maximum number of steps",
                         "0",
@@ -24,7 +25,7 @@ namespace fsgmpm
                         "Stop after this many steps (0: no limit).");
       prm.declare_entry("Courant number",
                         "0.5",
-                        Patterns::Double(0, 1),
+                        RealInterval(0, 1, true, false),
                         "C in dt = C min h/(c + |v|), 0 < C <= 1.");
       prm.declare_entry("Fixed time step",
                         "0",

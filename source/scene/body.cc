@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/scene/body.h>
@@ -45,7 +46,7 @@ namespace fsgmpm
                           "Mass density (kg/m^3, 1e-3 to 1e5).");
         prm.declare_entry("Initial velocity",
                           "0, 0",
-                          Patterns::List(Patterns::Double()),
+                          Patterns::List(Patterns::Double(), 2, 3),
                           "Initial velocity (m/s, at most 1e5 in magnitude); "
                           "in 3D a two-entry value means z = 0.");
         prm.declare_entry("Material model",
@@ -105,7 +106,7 @@ namespace fsgmpm
                           "enclosed by a membrane.");
         prm.declare_entry("Free surface threshold",
                           "0.6",
-                          Patterns::Double(0, 1),
+                          RealInterval(0, 1, true, true),
                           "f_c: a point whose interpolated nodal volume "
                           "fraction is at most f_c is a free-surface point, "
                           "0 < f_c < 1.");

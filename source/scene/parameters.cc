@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/monitors/scene_monitors.h>
@@ -110,7 +111,7 @@ namespace fsgmpm
         "(doc/geocontainer_validation.md).");
       prm.declare_entry("Gravity",
                         "0, -9.81",
-                        Patterns::List(Patterns::Double()),
+                        Patterns::List(Patterns::Double(), 2, 3),
                         "Gravitational acceleration (m/s^2, at most 1e5 in "
                         "magnitude); y is vertical. In 3D a two-entry value "
                         "means z = 0.");
@@ -138,7 +139,7 @@ namespace fsgmpm
     {
       prm.declare_entry("Local damping coefficient",
                         "0",
-                        Patterns::Double(0, 1),
+                        RealInterval(0, 1, false, true),
                         "alpha of local non-viscous damping F = -alpha "
                         "|F_unbalanced| sign(v), 0 <= alpha < 1.");
       prm.declare_entry("Mass scaling",
@@ -164,20 +165,20 @@ namespace fsgmpm
                         "matches the 2D plane-strain mesh.");
       prm.declare_entry("Extrusion thickness",
                         "0.1",
-                        Patterns::Double(0),
+                        RealInterval::above(0),
                         "Type = extruded box: thickness in z (m, > 0; "
                         "1e-3 to 1e3 times the cell size).");
       prm.declare_entry("Lower corner",
                         "0, 0",
-                        Patterns::List(Patterns::Double()),
+                        Patterns::List(Patterns::Double(), 2, 3),
                         "Type = box: lower corner (m, within +-1e9).");
       prm.declare_entry("Upper corner",
                         "1, 0.6",
-                        Patterns::List(Patterns::Double()),
+                        Patterns::List(Patterns::Double(), 2, 3),
                         "Type = box: upper corner (m, within +-1e9).");
       prm.declare_entry("Subdivisions",
                         "40, 24",
-                        Patterns::List(Patterns::Integer(1)),
+                        Patterns::List(Patterns::Integer(1), 2, 3),
                         "Type = box: number of squares/cubes per direction, "
                         "each split into 2 triangles (2D) or 5-6 tets (3D); "
                         "at most 1e7 squares/cubes, each at least 1e-6 m.");

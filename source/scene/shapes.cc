@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/real_interval.h>
 #include <fsgmpm/io/format.h>
 #include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/shape_factory.h>
@@ -71,11 +72,11 @@ namespace fsgmpm
       {
         prm.declare_entry("Box lower corner",
                           "0.3, 0.2",
-                          Patterns::List(Patterns::Double()),
+                          Patterns::List(Patterns::Double(), 2, 3),
                           "Shape = box: lower corner (dim coordinates, m).");
         prm.declare_entry("Box upper corner",
                           "0.7, 0.4",
-                          Patterns::List(Patterns::Double()),
+                          Patterns::List(Patterns::Double(), 2, 3),
                           "Shape = box: upper corner (dim coordinates, m).");
       }
 
@@ -100,16 +101,16 @@ namespace fsgmpm
       {
         prm.declare_entry("Column base corner",
                           "0, 0",
-                          Patterns::List(Patterns::Double()),
+                          Patterns::List(Patterns::Double(), 2, 3),
                           "Shape = column: lower corner (m); in 3D the depth "
                           "is that of Box lower/upper corner.");
         prm.declare_entry("Column width",
                           "0.2",
-                          Patterns::Double(0),
+                          RealInterval::above(0),
                           "Shape = column: width L0 in x (m, > 0).");
         prm.declare_entry("Column aspect ratio",
                           "1",
-                          Patterns::Double(0),
+                          RealInterval::above(0),
                           "Shape = column: a = H0/L0 (> 0).");
       }
 
@@ -148,11 +149,11 @@ namespace fsgmpm
       {
         prm.declare_entry("Ellipse center",
                           "0.5, 0.5",
-                          Patterns::List(Patterns::Double()),
+                          Patterns::List(Patterns::Double(), 2, 3),
                           "Shape = ellipse: centre (m).");
         prm.declare_entry("Ellipse semi-axes",
                           "0.1, 0.1",
-                          Patterns::List(Patterns::Double(0)),
+                          Patterns::List(Patterns::Double(0), 2, 3),
                           "Shape = ellipse: semi-axes along x, y (, z) (m).");
       }
 

@@ -13,6 +13,8 @@ polygon for Polygon vertices).
 Every case must either
   - exit with status 1, a message "fsgmpm: error: ..." naming the parameter,
     and no output directory (input is validated before anything is written),
+    unless the value is an end of the range that its printed pattern says
+    is inclusive (the printed patterns equal the checks),
   - or run: exit 0, or exit 3 (detected instability, with a diagnosis and
     termination = unstable in summary.json), with complete output: no
     leftover temporary file, monitors.csv with whole rows of finite numbers
@@ -93,6 +95,36 @@ def number_range(allowed):
 
 def fmt(x):
     return repr(int(x)) if float(x).is_integer() else repr(x)
+
+
+def inclusive_edges(allowed):
+    """The finite ends of a Double pattern that it prints as inclusive:
+    "[Double 0...1 (inclusive)]" both, "[Double 0...0.5 (0 inclusive, 0.5
+    exclusive)]" the first."""
+    if not allowed.startswith("[Double"):
+        return []
+    lo, hi = number_range(allowed)
+    mixed = re.search(r"\((\S+) (inclusive|exclusive), (\S+) "
+                      r"(inclusive|exclusive)\)", allowed)
+    ends = []
+    for k, b in enumerate((lo, hi)):
+        if b is None or not math.isfinite(b):
+            continue
+        if mixed is None or mixed.group(2 + 2 * k) == "inclusive":
+            ends.append(fmt(b))
+    return ends
+
+
+# path -> the values at the ends its printed pattern includes: a check that
+# refuses one of them disagrees with what --print-parameters promises.
+INCLUSIVE_EDGES = {}
+# Ends refused for what they mean together with another entry of the fuzz
+# scene (a valid value on its own): (path regex, message regex).
+EDGE_INTERPLAY = [
+    (r"Newtonian fluid/Bulk modulus$", r"too small for the initial pressure"),
+    (r"^Membrane/(Circumference|Enclosed area)$", r"cannot enclose"),
+    (r"Mohr-Coulomb/Friction angle$", r"Cohesion are both 0"),
+]
 
 
 def double_values(allowed):
@@ -550,6 +582,12 @@ def run_case(case, exe, server, scenes, work, timeout):
                     accept and re.search(accept, err)):
                 return case, status, "message does not name %s: %s" % (
                     path, err[:300]), wall
+            if value in INCLUSIVE_EDGES.get(path, ()) and not any(
+                    re.search(p, path) and re.search(m, err)
+                    for p, m in EDGE_INTERPLAY):
+                return case, status, ("the printed pattern includes %s, "
+                                      "the check refuses it: %s"
+                                      % (value, err[:300])), wall
             if os.path.exists(out_dir) and path != "Output/Directory":
                 return case, status, "exit 1 after writing output: " + \
                     err[:300], wall
@@ -610,6 +648,7 @@ def main():
                 continue
             scene, sets = context(path)
             values = values_for(path, allowed, fixtures)
+            INCLUSIVE_EDGES[path] = set(inclusive_edges(allowed or ""))
             m = re.match(r"Bodies/Body ([2-7])/", path)
             if m:
                 # The same code as Body 1 (a loop over the subsections):
