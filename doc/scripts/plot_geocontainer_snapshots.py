@@ -35,13 +35,9 @@ def nearest(pairs, t):
 
 
 def membrane_points(path):
-    text = open(path).read()
-    block = re.search(r"<Points>\s*<DataArray[^>]*>(.*?)</DataArray>", text,
-                      re.S).group(1)
-    pts = np.array(block.split(), float).reshape(-1, 3)[:, :2]
-    cells = re.search(r'Name="connectivity"[^>]*>(.*?)</DataArray>', text,
-                      re.S).group(1)
-    return pts, np.array(cells.split(), int).reshape(-1, 2)
+    fields = read_vtu(path)
+    return (fields["Points"][:, :2],
+            np.asarray(fields["connectivity"], int).reshape(-1, 2))
 
 
 out, directory = sys.argv[1], sys.argv[2]

@@ -21,8 +21,11 @@
 #include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/scene/parameters.h>
 #include <fsgmpm/simulator.h>
+#include <fsgmpm/source_dir.h>
 
 #include <boost/property_tree/ptree.hpp>
+
+#include <cstdio>
 
 #include <cstdlib>
 #include <filesystem>
@@ -152,6 +155,57 @@ namespace
     });
   }
 
+  /// The argument quoted for a POSIX shell.
+  std::string
+  shell_quoted(const std::string &text)
+  {
+    std::string quoted = "'";
+    for (const char c : text)
+      quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+  }
+
+  /// Output/Report: doc/scripts/plot.py of the source tree plots the
+  /// finished run's monitors into DIR/report.png. What the script says
+  /// goes to standard error (and log.txt); a failure is a warning, since
+  /// the run's results are complete without the picture.
+  void
+  write_report(const std::filesystem::path &dir)
+  {
+    const std::filesystem::path script
+      = std::filesystem::path(fsgmpm::source_directory) / "doc" / "scripts"
+        / "plot.py";
+    const std::filesystem::path png = dir / "report.png";
+    if (!std::filesystem::exists(script))
+      {
+        std::cerr << "fsgmpm: warning: Output/Report: no " << script.string()
+                  << " (the source tree this program was built from); no "
+                     "report written."
+                  << std::endl;
+        return;
+      }
+    const std::string command = "/usr/bin/python3 " + shell_quoted(script) + " "
+                                + shell_quoted(dir) + " -o " + shell_quoted(png)
+                                + " 2>&1";
+    std::FILE  *pipe = popen(command.c_str(), "r");
+    std::string said;
+    if (pipe != nullptr)
+      {
+        char buffer[512];
+        while (std::fgets(buffer, sizeof(buffer), pipe) != nullptr)
+          said += buffer;
+      }
+    const int status = pipe != nullptr ? pclose(pipe) : -1;
+    std::cerr << said;
+    if (status == 0 && std::filesystem::exists(png))
+      std::cerr << "fsgmpm: report written to " << png.string() << std::endl;
+    else
+      std::cerr << "fsgmpm: warning: Output/Report: " << script.string()
+                << " failed; no report written (it needs "
+                   "python3-matplotlib)."
+                << std::endl;
+  }
+
   template <int dim>
   int
   run_scene(ParameterHandler  &prm,
@@ -175,6 +229,11 @@ namespace
     // its checkpoint and summary.json written.
     fsgmpm::Interruption::install_handlers();
     const fsgmpm::Termination termination = simulator.run();
+    prm.enter_subsection("Output");
+    const bool report = prm.get_bool("Report");
+    prm.leave_subsection();
+    if (report && run_log != nullptr)
+      write_report(dir);
     if (termination == fsgmpm::Termination::interrupted)
       return fsgmpm::Interruption::exit_status(
         simulator.get_interrupt_signal());
@@ -313,12 +372,7 @@ main(int argc, char **argv)
       // The command as a shell would take it back: each argument quoted.
       std::string command;
       for (int i = 0; i < argc; ++i)
-        {
-          std::string quoted = "'";
-          for (const char c : std::string(argv[i]))
-            quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-          command += (i > 0 ? " " : "") + quoted + "'";
-        }
+        command += (i > 0 ? " " : "") + shell_quoted(argv[i]);
       return dim == 2
                ? run_scene<2>(prm, restart_directory, command, run_log.get())
                : run_scene<3>(prm, restart_directory, command, run_log.get());

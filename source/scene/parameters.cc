@@ -253,6 +253,14 @@ namespace fsgmpm
                         "2, with tension, minor_tension, the tension "
                         "tensor (N/m, x-y-z) and stretch per cell and "
                         "velocity and displacement per node; VTU only).");
+      prm.declare_entry("Report",
+                        "false",
+                        Patterns::Bool(),
+                        "At the end of the run, plot its monitors (against "
+                        "the scene's reference where it has one) into "
+                        "report.png in the output directory, with "
+                        "doc/scripts/plot.py of the source tree "
+                        "(python3-matplotlib); a warning if that fails.");
       prm.declare_entry("Write grid",
                         "false",
                         Patterns::Bool(),

@@ -5,7 +5,8 @@
 # range (the errors over the points inside the run, nothing extrapolated);
 # a missing run directory and a scene option of another scene give a
 # one-line message and exit status 2; prm/elastic_block_drop.prm (no scene
-# monitors) gets the generic energy plot. About 10 s.
+# monitors) gets the generic energy plot, and with Output/Report = true the
+# run writes it as report.png itself. About 15 s.
 # Usage: plot_entry.sh <fsgmpm> <source dir>
 set -eu
 exe=$1
@@ -58,4 +59,13 @@ cat block.out block.err
 test -s block/plot.png
 grep -q "energy balance residual at t = 0.05 s" block.out
 if grep -q warning block.err; then echo "unexpected warning"; exit 1; fi
+# Output/Report = true: the run draws report.png itself and says so (in its
+# log too).
+"$exe" "$2/prm/elastic_block_drop.prm" --set "Simulation/End time=0.05" \
+  --set "Output/Directory=report" --set "Output/Quiet=true" \
+  --set "Output/Report=true" 2> report.err
+cat report.err
+head -c 8 report/report.png | od -c | grep -q "P   N   G"
+grep -q "^fsgmpm: report written to report/report.png$" report.err
+grep -q "^fsgmpm: report written to report/report.png$" report/log.txt
 echo "plot entry point: ok"
