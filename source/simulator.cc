@@ -585,6 +585,12 @@ namespace fsgmpm
           return !m->is_fluid();
         }))
       particles.enable_initial_position();
+    // The plastic strain and yield flag in the output, where a material
+    // yields.
+    if (std::any_of(materials.begin(), materials.end(), [](const auto &m) {
+          return m->yields();
+        }))
+      particles.enable_plasticity();
     particles.sort_by_cell(grid->n_cells());
   }
 

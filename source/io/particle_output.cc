@@ -13,7 +13,8 @@ namespace fsgmpm
   {
     // Field layout: velocity (dim), stress xx yy zz xy [xz yz], pressure,
     // mass, volume, material id, body id, free surface, vorticity,
-    // projected pressure, von Mises stress, [displacement (dim)].
+    // projected pressure, von Mises stress, [plastic strain, yielding],
+    // [displacement (dim)].
     constexpr unsigned int
     n_stress_components(const int dim)
     {
@@ -63,9 +64,11 @@ namespace fsgmpm
                                      const BackgroundGrid<dim> *grid,
                                      const NodalFields<dim>    *nodes)
   {
-    with_displacement = particles.has_initial_position();
-    const unsigned int n_fields
-      = dim + n_stress_components(dim) + 9 + (with_displacement ? dim : 0);
+    with_displacement           = particles.has_initial_position();
+    with_plasticity             = particles.has_plasticity();
+    const unsigned int n_fields = dim + n_stress_components(dim) + 9
+                                  + (with_plasticity ? 2 : 0)
+                                  + (with_displacement ? dim : 0);
     patches.resize(particles.size());
     for (unsigned int p = 0; p < particles.size(); ++p)
       {
@@ -105,6 +108,11 @@ namespace fsgmpm
         const SymmetricTensor<2, 3> deviator
           = s - trace(s) / 3. * unit_symmetric_tensor<3>();
         patch.data(f++, 0) = std::sqrt(1.5 * (deviator * deviator));
+        if (with_plasticity)
+          {
+            patch.data(f++, 0) = particles.plastic_strain[p];
+            patch.data(f++, 0) = particles.yielding[p];
+          }
         if (with_displacement)
           for (unsigned int d = 0; d < dim; ++d)
             patch.data(f++, 0)
@@ -168,6 +176,11 @@ namespace fsgmpm
                           "projected_pressure",
                           "von_mises"})
       names.emplace_back(n);
+    if (with_plasticity)
+      {
+        names.emplace_back("plastic_strain");
+        names.emplace_back("yielding");
+      }
     if (with_displacement)
       names.resize(names.size() + dim, "displacement");
     return names;

@@ -19,6 +19,11 @@ namespace fsgmpm
       out.put_tensor_rows("particles/affine_velocity", p.affine_velocity);
       if (p.has_initial_position())
         out.put_tensor_rows("particles/initial_position", p.initial_position);
+      if (p.has_plasticity())
+        {
+          out.put_rows("particles/plastic_strain", p.plastic_strain);
+          out.put_integer_rows("particles/yielding", p.yielding);
+        }
       out.put_tensor_rows("particles/stress", p.stress);
       out.put_rows("particles/mass", p.mass);
       out.put_rows("particles/volume", p.volume);
@@ -58,6 +63,19 @@ namespace fsgmpm
         // A checkpoint written without them: the displacement counts from
         // the restart.
         p.initial_position = p.position;
+      if (in.has("particles/plastic_strain"))
+        {
+          if (!p.has_plasticity())
+            p.enable_plasticity();
+          p.plastic_strain = in.doubles("particles/plastic_strain");
+          p.yielding       = in.integers<std::uint8_t>("particles/yielding");
+        }
+      else if (p.has_plasticity())
+        {
+          // A checkpoint written without them: from the restart.
+          p.plastic_strain.assign(p.position.size(), 0.);
+          p.yielding.assign(p.position.size(), 0);
+        }
       p.stress = in.tensors<SymmetricTensor<2, 3>>("particles/stress");
       p.mass   = in.doubles("particles/mass");
       p.volume = in.doubles("particles/volume");
@@ -81,6 +99,10 @@ namespace fsgmpm
         AssertThrow(size == n,
                     ExcMessage("The checkpoint's point arrays differ in "
                                "length: it is damaged."));
+      AssertThrow(p.plastic_strain.size() == (p.has_plasticity() ? n : 0)
+                    && p.yielding.size() == p.plastic_strain.size(),
+                  ExcMessage("The checkpoint's plastic strains do not match "
+                             "its points: it is damaged."));
       AssertThrow(p.initial_position.size()
                     == (p.has_initial_position() ? n : 0),
                   ExcMessage("The checkpoint's initial positions do not "

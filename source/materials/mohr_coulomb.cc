@@ -242,7 +242,8 @@ namespace fsgmpm
                                  const double          *new_volume,
                                  const PointKinematics &kinematics,
                                  const unsigned int     n,
-                                 const double           dt) const
+                                 const double           dt,
+                                 const PointPlasticity *plasticity) const
   {
     const double E = elasticity.E, nu = elasticity.nu;
     double       work = 0;
@@ -256,6 +257,16 @@ namespace fsgmpm
           = (1 + nu) / E * excess
             - nu / E * trace(excess) * unit_symmetric_tensor<3>();
         work += new_volume[i] * (new_stress[i] * plastic_strain);
+        if (plasticity != nullptr)
+          {
+            const SymmetricTensor<2, 3> shear = deviator(plastic_strain);
+            const double increment = std::sqrt(2. / 3. * (shear * shear));
+            plasticity->strain[i] += increment;
+            // An elastic step leaves the predictor (to round-off).
+            plasticity->yielding[i]
+              = (excess.norm() > 1e-10 * new_stress[i].norm()
+                 && excess.norm() > 0);
+          }
       }
     return work;
   }

@@ -256,13 +256,20 @@ namespace fsgmpm
                                     const double                *new_volume,
                                     const PointKinematics       &kinematics,
                                     const unsigned int           n,
-                                    const double                 dt) const
+                                    const double                 dt,
+                                    const PointPlasticity *plasticity) const
   {
     // A class derived from this one (a Bingham mud) has its own stress and
     // books its own losses.
     if (!is_this_class())
-      return Material::dissipated_energy(
-        old_stress, new_stress, old_volume, new_volume, kinematics, n, dt);
+      return Material::dissipated_energy(old_stress,
+                                         new_stress,
+                                         old_volume,
+                                         new_volume,
+                                         kinematics,
+                                         n,
+                                         dt,
+                                         plasticity);
     const SymmetricTensor<2, 3> d_dev  = deviator(kinematics.strain_rate);
     const double                rate   = 2. * mu * (d_dev * d_dev) * dt;
     double                      volume = 0;

@@ -23,10 +23,10 @@ namespace fsgmpm
         Tensor<1, dim>        velocity;
         Tensor<2, dim>        affine_velocity;
         SymmetricTensor<2, 3> stress;
-        double                mass, volume, reference_volume;
+        double                mass, volume, reference_volume, plastic_strain;
         unsigned int          cell, id;
         std::uint16_t         material_id, body_id;
-        std::uint8_t          free_surface;
+        std::uint8_t          free_surface, yielding;
       };
 
       template <int dim>
@@ -43,6 +43,13 @@ namespace fsgmpm
           r.affine_velocity = particles.affine_velocity[p];
         if (particles.has_initial_position())
           r.initial_position = particles.initial_position[p];
+        r.plastic_strain = 0;
+        r.yielding       = 0;
+        if (particles.has_plasticity())
+          {
+            r.plastic_strain = particles.plastic_strain[p];
+            r.yielding       = particles.yielding[p];
+          }
         r.stress           = particles.stress[p];
         r.mass             = particles.mass[p];
         r.volume           = particles.volume[p];
@@ -79,6 +86,11 @@ namespace fsgmpm
               particles.affine_velocity.push_back(r.affine_velocity);
             if (particles.has_initial_position())
               particles.initial_position.push_back(r.initial_position);
+            if (particles.has_plasticity())
+              {
+                particles.plastic_strain.push_back(r.plastic_strain);
+                particles.yielding.push_back(r.yielding);
+              }
             particles.stress.push_back(r.stress);
             particles.mass.push_back(r.mass);
             particles.volume.push_back(r.volume);
@@ -249,6 +261,11 @@ namespace fsgmpm
         cut(particles.affine_velocity);
       if (particles.has_initial_position())
         cut(particles.initial_position);
+      if (particles.has_plasticity())
+        {
+          cut(particles.plastic_strain);
+          cut(particles.yielding);
+        }
       cut(particles.stress);
       cut(particles.mass);
       cut(particles.volume);

@@ -38,6 +38,11 @@ namespace fsgmpm
       affine_velocity.emplace_back();
     if (with_initial_position)
       initial_position.push_back(x);
+    if (with_plasticity)
+      {
+        plastic_strain.push_back(0.);
+        yielding.push_back(0);
+      }
   }
 
 
@@ -63,6 +68,11 @@ namespace fsgmpm
       affine_velocity.reserve(n);
     if (with_initial_position)
       initial_position.reserve(n);
+    if (with_plasticity)
+      {
+        plastic_strain.reserve(n);
+        yielding.reserve(n);
+      }
   }
 
 
@@ -73,6 +83,17 @@ namespace fsgmpm
   {
     with_initial_position = true;
     initial_position      = position;
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleStore<dim>::enable_plasticity()
+  {
+    with_plasticity = true;
+    plastic_strain.resize(size());
+    yielding.resize(size());
   }
 
 
@@ -246,6 +267,13 @@ namespace fsgmpm
          [this]() {
            if (with_initial_position)
              permute(initial_position);
+         },
+         [this]() {
+           if (with_plasticity)
+             {
+               permute(plastic_strain);
+               permute(yielding);
+             }
          }};
     parallel::apply_to_subranges(
       0u,
@@ -292,6 +320,11 @@ namespace fsgmpm
       shrink(affine_velocity);
     if (with_initial_position)
       shrink(initial_position);
+    if (with_plasticity)
+      {
+        shrink(plastic_strain);
+        shrink(yielding);
+      }
   }
 
 
@@ -389,9 +422,10 @@ namespace fsgmpm
         + velocity.capacity() * sizeof(Tensor<1, dim>)
         + affine_velocity.capacity() * sizeof(Tensor<2, dim>)
         + stress.capacity() * sizeof(SymmetricTensor<2, 3>)
-        + (mass.capacity() + volume.capacity() + reference_volume.capacity())
+        + (mass.capacity() + volume.capacity() + reference_volume.capacity()
+           + plastic_strain.capacity())
             * sizeof(double)
-        + cell.capacity() * sizeof(unsigned int)
+        + yielding.capacity() + cell.capacity() * sizeof(unsigned int)
         + (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t)
         + free_surface.capacity() + ghost.capacity()
         + id.capacity() * sizeof(unsigned int)

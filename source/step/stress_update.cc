@@ -125,10 +125,15 @@ namespace fsgmpm
                       particles.volume.begin() + end,
                       old_volume.begin());
           };
+      // With it the points' plastic state, where they keep one.
+      const bool keep_plasticity   = particles.has_plasticity();
       const auto dissipated_in_run = [&](const unsigned int     begin,
                                          const unsigned int     run,
                                          const unsigned int     last,
                                          const PointKinematics &kin) {
+        const PointPlasticity plasticity{
+          keep_plasticity ? particles.plastic_strain.data() + run : nullptr,
+          keep_plasticity ? particles.yielding.data() + run : nullptr};
         return materials[particles.material_id[run]]->dissipated_energy(
           old_stress.data() + (run - begin),
           particles.stress.data() + run,
@@ -136,7 +141,8 @@ namespace fsgmpm
           particles.volume.data() + run,
           kin,
           last - run,
-          dt);
+          dt,
+          keep_plasticity ? &plasticity : nullptr);
       };
       const auto update_cell = [&](const unsigned int c, double &dissipated) {
         const unsigned int begin  = particles.cell_begin(c);

@@ -8,6 +8,10 @@ Usage: point_fields.py FSGMPM SOURCE_DIR
   point has moved by -g t^2 / 2 (to the explicit steps' own offset, measured
   0.24 %) and not sideways; at the start by nothing. A scene of
   water alone writes no displacement (its points do not keep their start).
+- plastic_strain, yielding: none for an elastic body; the granular column
+  at rest (K0) has not yielded, collapsing (0.05 s) some points yield, and
+  those have a positive accumulated plastic strain (the value itself is
+  tested against simple shear in the Mohr-Coulomb unit test).
 - von_mises: q = sqrt(3 J2) of the whole stress (sigma_zz included), against
   the stress components of the same VTU file, on the K0 column of
   prm/granular_column_collapse.prm (q = (1 - K0) sigma_v at rest: not zero).
@@ -58,9 +62,22 @@ run("default_dam_break.prm", "water", "--set", "Simulation/End time=0.002")
 water = read_vtu(os.path.join(work, "water", "particles_00000.vtu"))
 check("water alone: no displacement field", "displacement" not in water)
 
+check("an elastic body: no plastic state",
+      "plastic_strain" not in late and "yielding" not in late)
+
 run("granular_column_collapse.prm", "soil",
-    "--set", "Simulation/Maximum number of steps=2")
+    "--set", "Simulation/End time=0.05", "--set", "Output/Output interval=0.05")
 soil = read_vtu(os.path.join(work, "soil", "particles_00000.vtu"))
+collapsing = read_vtu(os.path.join(work, "soil", "particles_00001.vtu"))
+check("soil at rest (K0) has not yielded",
+      np.all(soil["plastic_strain"] == 0) and np.all(soil["yielding"] == 0))
+ep, flag = collapsing["plastic_strain"], collapsing["yielding"]
+check("collapsing soil: yield flags 0 or 1, some points yielding",
+      set(np.unique(flag)) <= {0, 1} and np.count_nonzero(flag) > 0,
+      "(%d of %d yielding at 0.05 s)" % (np.count_nonzero(flag), len(flag)))
+check("collapsing soil: plastic strain >= 0, > 0 where yielding",
+      np.all(ep >= 0) and np.all(ep[flag == 1] > 0),
+      "(largest %.3g)" % ep.max())
 sxx, syy, szz, sxy = (soil["stress_" + c] for c in ("xx", "yy", "zz", "xy"))
 mean = (sxx + syy + szz) / 3
 q = np.sqrt(1.5 * ((sxx - mean) ** 2 + (syy - mean) ** 2 + (szz - mean) ** 2

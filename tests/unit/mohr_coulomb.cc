@@ -582,15 +582,27 @@ TEST(MohrCoulomb, PlasticWorkIsBooked)
   k.rotation          = unit_symmetric_tensor<3>();
   const double volume = 1;
   double       booked = 0, booked_elastic = 0;
+  // The point's plastic state: the equivalent plastic strain of simple
+  // shear is gamma_p / sqrt(3), gamma_p = gamma - c / G; the point yields
+  // from the step that reaches gamma_y on.
+  double          plastic_strain = 0;
+  std::uint8_t    yielding       = 0;
+  PointPlasticity state{&plastic_strain, &yielding};
+  unsigned int    elastic_steps_yielding = 0, plastic_steps_not = 0;
   for (unsigned int i = 0; i < n; ++i)
     {
       const SymmetricTensor<2, 3> old = s;
       m.update_stresses(&k, &s, 1, dt);
       const double w
-        = m.dissipated_energy(&old, &s, &volume, &volume, k, 1, dt);
+        = m.dissipated_energy(&old, &s, &volume, &volume, k, 1, dt, &state);
       booked += w;
       if ((i + 1) * dt * gamma_dot < c / G)
-        booked_elastic += std::abs(w);
+        {
+          booked_elastic += std::abs(w);
+          elastic_steps_yielding += yielding;
+        }
+      else if (i * dt * gamma_dot > c / G)
+        plastic_steps_not += (yielding == 0);
     }
   const double gamma = n * dt * gamma_dot;
   const double exact = c * (gamma - c / G);
@@ -603,4 +615,12 @@ TEST(MohrCoulomb, PlasticWorkIsBooked)
   EXPECT_NEAR(s[0][1] / c, 1., 1e-9);
   EXPECT_NEAR(booked / exact, 1., 1e-10);
   EXPECT_LT(booked_elastic, 1e-12 * exact);
+  const double exact_strain = (gamma - c / G) / std::sqrt(3.);
+  std::cout << "[ measured ] equivalent plastic strain " << plastic_strain
+            << ", exact " << exact_strain
+            << " (ratio - 1 = " << plastic_strain / exact_strain - 1 << ")"
+            << std::endl;
+  EXPECT_NEAR(plastic_strain / exact_strain, 1., 1e-10);
+  EXPECT_EQ(elastic_steps_yielding, 0u);
+  EXPECT_EQ(plastic_steps_not, 0u);
 }

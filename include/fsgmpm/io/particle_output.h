@@ -77,6 +77,9 @@ namespace fsgmpm
     /// Whether the points keep their initial positions (a displacement
     /// field follows the others).
     bool with_displacement = false;
+    /// Whether the points keep their plastic state (plastic_strain and
+    /// yielding fields).
+    bool with_plasticity = false;
   };
 
   /**

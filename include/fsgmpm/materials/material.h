@@ -4,6 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <cstdint>
 #include <string>
 
 namespace fsgmpm
@@ -27,6 +28,24 @@ namespace fsgmpm
     /// possibly NMD-smoothed, volumetric strain rate as strain_rate).
     double volume_ratio = 1.;
   };
+
+  /**
+   * The plastic state that the points keep for the output (the
+   * plastic_strain and yielding fields), for the n points of one
+   * Material::dissipated_energy() call: a material that yields adds each
+   * point's equivalent plastic strain increment and sets its flag.
+   */
+  struct PointPlasticity
+  {
+    /// Accumulated equivalent plastic strain, the sum over the steps of
+    /// sqrt(2/3 dev(de_p) : dev(de_p)) (the plastic shear strain of soil
+    /// mechanics; gamma_p / sqrt(3) in simple shear).
+    double *strain;
+    /// 1 where the point yielded in this step, else 0.
+    std::uint8_t *yielding;
+  };
+
+
 
   /**
    * Interface of a constitutive model. A material updates the Cauchy stress
@@ -125,7 +144,8 @@ namespace fsgmpm
      * @p old_stress and @p old_volume and now have @p new_stress and
      * @p new_volume, updated with @p kinematics over @p dt. The default, for
      * an elastic material, is zero; a material that dissipates overrides
-     * it.
+     * it. Where the points keep their plastic state (@p plasticity not
+     * null), a material that yields also updates it.
      */
     virtual double
     dissipated_energy(const SymmetricTensor<2, 3> * /*old_stress*/,
@@ -134,9 +154,19 @@ namespace fsgmpm
                       const double * /*new_volume*/,
                       const PointKinematics & /*kinematics*/,
                       const unsigned int /*n*/,
-                      const double /*dt*/) const
+                      const double /*dt*/,
+                      const PointPlasticity * /*plasticity*/ = nullptr) const
     {
       return 0.;
+    }
+
+    /// Whether the material yields (the points then keep their plastic
+    /// strain and yield flag for the output; dissipated_energy() fills
+    /// them).
+    virtual bool
+    yields() const
+    {
+      return false;
     }
 
     /// Mass density at which the material is created.

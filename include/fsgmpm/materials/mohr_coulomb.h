@@ -108,7 +108,9 @@ namespace fsgmpm
 
     /// The plastic work of the return mapping, sigma^{n+1} : C^-1 :
     /// (sigma_trial - sigma^{n+1}) V^{n+1}, sigma_trial the elastic
-    /// predictor from the old stress (backward Euler's sigma : d^p dt V).
+    /// predictor from the old stress (backward Euler's sigma : d^p dt V);
+    /// the same plastic strain increment C^-1 : (sigma_trial - sigma^{n+1})
+    /// into @p plasticity.
     double
     dissipated_energy(const SymmetricTensor<2, 3> *old_stress,
                       const SymmetricTensor<2, 3> *new_stress,
@@ -116,7 +118,15 @@ namespace fsgmpm
                       const double                *new_volume,
                       const PointKinematics       &kinematics,
                       const unsigned int           n,
-                      const double                 dt) const override;
+                      const double                 dt,
+                      const PointPlasticity       *plasticity
+                      = nullptr) const override;
+
+    bool
+    yields() const override
+    {
+      return true;
+    }
 
     double
     reference_density() const override

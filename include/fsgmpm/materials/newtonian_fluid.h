@@ -146,7 +146,9 @@ namespace fsgmpm
                       const double                *new_volume,
                       const PointKinematics       &kinematics,
                       const unsigned int           n,
-                      const double                 dt) const override;
+                      const double                 dt,
+                      const PointPlasticity       *plasticity
+                      = nullptr) const override;
 
     double
     viscosity() const override

@@ -89,6 +89,22 @@ namespace fsgmpm
     void
     enable_initial_position();
 
+    /**
+     * Switch on the points' plastic state (for the output): the
+     * accumulated equivalent plastic strain and the yield flag of the last
+     * step, zero for the points already stored. Scenes with a material that
+     * yields switch it on.
+     */
+    void
+    enable_plasticity();
+
+    /// Whether the points keep their plastic state.
+    bool
+    has_plasticity() const
+    {
+      return with_plasticity;
+    }
+
     /// Whether the points keep their initial positions.
     bool
     has_initial_position() const
@@ -209,8 +225,13 @@ namespace fsgmpm
     /// Where each point was at the start (empty unless
     /// enable_initial_position()): the displacement is position minus it.
     std::vector<Point<dim>> initial_position;
-    std::vector<double>     mass;
-    std::vector<double>     volume;
+    /// Accumulated equivalent plastic strain and whether the point yielded
+    /// in the last step (empty unless enable_plasticity();
+    /// PointPlasticity).
+    std::vector<double>       plastic_strain;
+    std::vector<std::uint8_t> yielding;
+    std::vector<double>       mass;
+    std::vector<double>       volume;
     /// Reference volume: the volume at zero pressure (fluids: m/rho_ref),
     /// so that J = V/V_ref is the deformation state of Eq. (16).
     std::vector<double>        reference_volume;
@@ -242,6 +263,7 @@ namespace fsgmpm
 
     bool with_affine_velocity  = false;
     bool with_initial_position = false;
+    bool with_plasticity       = false;
     /// Per cell: its slot, or invalid_slot (4 B per cell, where a begin
     /// and an end per cell took 8).
     std::vector<unsigned int> slot_of_cell;
