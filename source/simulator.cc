@@ -786,10 +786,13 @@ namespace fsgmpm
   Simulator<dim>::compute_monitors()
   {
     // MPI: every process holds the whole membrane; process 0 adds it.
+    // The potential energy is that of the gravity acting now (ramped, as
+    // in the external work), so that -d(potential) equals gravity's work
+    // whenever the field is steady.
     EnergyBalance::compute_energies(particles,
                                     materials,
                                     root ? membrane.get() : nullptr,
-                                    params.gravity,
+                                    current_gravity(),
                                     monitors,
                                     partition ? partition->get_communicator()
                                               : MPI_COMM_SELF);
@@ -804,7 +807,7 @@ namespace fsgmpm
     return EnergyBalance::local_energies(particles,
                                          materials,
                                          root ? membrane.get() : nullptr,
-                                         params.gravity,
+                                         current_gravity(),
                                          &nodes,
                                          partition ? &partition->counted_nodes()
                                                    : nullptr);

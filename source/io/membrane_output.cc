@@ -1,11 +1,7 @@
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/membrane_output.h>
+#include <fsgmpm/io/vtu_arrays.h>
 #include <fsgmpm/io/xdmf_series.h>
-
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/utilities.h>
-
-#include <zlib.h>
 
 #include <cmath>
 #include <cstdint>
@@ -24,41 +20,6 @@ namespace fsgmpm
     {
       const double ratio = membrane.element_size(e) / membrane.rest_size[e];
       return dim == 2 ? ratio : std::sqrt(ratio);
-    }
-
-    /// One DataArray of a VTU file, zlib-compressed and base64-encoded
-    /// as deal.II's DataOut writes its arrays (one block: a header of four
-    /// 32-bit numbers, then the compressed bytes), so that ParaView and
-    /// doc/scripts/read_vtu.py read both alike.
-    template <typename T>
-    void
-    write_binary_array(std::ostream         &out,
-                       const std::string    &attributes,
-                       const std::vector<T> &values)
-    {
-      const uLong        raw_size    = values.size() * sizeof(T);
-      uLongf             packed_size = compressBound(raw_size);
-      std::vector<Bytef> packed(packed_size);
-      const int          status
-        = compress2(packed.data(),
-                    &packed_size,
-                    reinterpret_cast<const Bytef *>(values.data()),
-                    raw_size,
-                    Z_DEFAULT_COMPRESSION);
-      AssertThrow(status == Z_OK,
-                  ExcMessage("zlib could not compress the membrane output."));
-      const std::uint32_t        header[4] = {1,
-                                              std::uint32_t(raw_size),
-                                              std::uint32_t(raw_size),
-                                              std::uint32_t(packed_size)};
-      std::vector<unsigned char> header_bytes(sizeof(header));
-      std::memcpy(header_bytes.data(), header, sizeof(header));
-      out << "<DataArray " << attributes << " format=\"binary\">\n"
-          << Utilities::encode_base64(header_bytes)
-          << Utilities::encode_base64(
-               std::vector<unsigned char>(packed.begin(),
-                                          packed.begin() + packed_size))
-          << "\n</DataArray>\n";
     }
 
     template <int dim>
@@ -119,34 +80,29 @@ namespace fsgmpm
         stretch[e] = element_stretch(membrane, e);
       std::vector<Tensor<1, dim>> positions(membrane.position.begin(),
                                             membrane.position.end());
-      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-             "version=\"0.1\" byte_order=\"LittleEndian\" "
-             "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\">\n"
-             "<UnstructuredGrid>\n"
-          << "<Piece NumberOfPoints=\"" << nn << "\" NumberOfCells=\"" << ne
-          << "\">\n<Points>\n";
-      write_binary_array(out,
-                         "type=\"Float64\" NumberOfComponents=\"3\"",
-                         padded(positions));
+      write_vtu_header(out, nn, ne);
+      write_vtu_binary_array(out,
+                             "type=\"Float64\" NumberOfComponents=\"3\"",
+                             padded(positions));
       out << "</Points>\n<Cells>\n";
-      write_binary_array(out,
-                         "type=\"Int64\" Name=\"connectivity\"",
-                         connectivity);
-      write_binary_array(out, "type=\"Int64\" Name=\"offsets\"", offsets);
+      write_vtu_binary_array(out,
+                             "type=\"Int64\" Name=\"connectivity\"",
+                             connectivity);
+      write_vtu_binary_array(out, "type=\"Int64\" Name=\"offsets\"", offsets);
       // VTK_LINE, VTK_TRIANGLE
-      write_binary_array(out,
-                         "type=\"UInt8\" Name=\"types\"",
-                         std::vector<std::uint8_t>(ne, dim == 2 ? 3 : 5));
+      write_vtu_binary_array(out,
+                             "type=\"UInt8\" Name=\"types\"",
+                             std::vector<std::uint8_t>(ne, dim == 2 ? 3 : 5));
       out << "</Cells>\n<CellData Scalars=\"tension\">\n";
-      write_binary_array(out,
-                         "type=\"Float64\" Name=\"tension\"",
-                         membrane.tension);
-      write_binary_array(out, "type=\"Float64\" Name=\"stretch\"", stretch);
+      write_vtu_binary_array(out,
+                             "type=\"Float64\" Name=\"tension\"",
+                             membrane.tension);
+      write_vtu_binary_array(out, "type=\"Float64\" Name=\"stretch\"", stretch);
       out << "</CellData>\n<PointData Vectors=\"velocity\">\n";
-      write_binary_array(out,
-                         "type=\"Float64\" Name=\"velocity\" "
-                         "NumberOfComponents=\"3\"",
-                         padded(membrane.velocity));
+      write_vtu_binary_array(out,
+                             "type=\"Float64\" Name=\"velocity\" "
+                             "NumberOfComponents=\"3\"",
+                             padded(membrane.velocity));
       out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     });
   }

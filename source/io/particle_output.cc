@@ -1,26 +1,18 @@
+#include <deal.II/base/data_out_base.h>
+
 #include <fsgmpm/io/atomic_file.h>
 #include <fsgmpm/io/particle_output.h>
+#include <fsgmpm/io/vtu_arrays.h>
 #include <fsgmpm/step/stages.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
 
 namespace fsgmpm
 {
-  namespace
-  {
-    // Field layout: velocity (dim), stress xx yy zz xy [xz yz], pressure,
-    // mass, volume, material id, body id, free surface, vorticity,
-    // projected pressure, von Mises stress, [plastic strain, yielding],
-    // [displacement (dim)].
-    constexpr unsigned int
-    n_stress_components(const int dim)
-    {
-      return dim == 2 ? 4 : 6;
-    }
-  } // namespace
 
   template <int dim>
   typename ParticleOutput<dim>::NodalPointFields
@@ -64,156 +56,211 @@ namespace fsgmpm
                                      const BackgroundGrid<dim> *grid,
                                      const NodalFields<dim>    *nodes)
   {
-    with_displacement           = particles.has_initial_position();
-    with_plasticity             = particles.has_plasticity();
-    const unsigned int n_fields = dim + n_stress_components(dim) + 9
-                                  + (with_plasticity ? 2 : 0)
-                                  + (with_displacement ? dim : 0);
-    patches.resize(particles.size());
-    for (unsigned int p = 0; p < particles.size(); ++p)
-      {
-        auto &patch       = patches[p];
-        patch.vertices[0] = particles.position[p];
-        patch.patch_index = p;
-        patch.data.reinit(n_fields, 1);
-        unsigned int f = 0;
+    const unsigned int n = particles.size();
+    positions.assign(3 * n, 0.);
+    for (unsigned int p = 0; p < n; ++p)
+      for (unsigned int d = 0; d < dim; ++d)
+        positions[3 * p + d] = particles.position[p][d];
+
+    fields.clear();
+    const auto add = [&](const std::string &name,
+                         const unsigned int n_components,
+                         const bool         integer,
+                         const auto        &value_of) {
+      Field field{name, n_components, integer, {}};
+      field.values.resize(std::size_t(n_components) * n);
+      for (unsigned int p = 0; p < n; ++p)
+        value_of(p, &field.values[std::size_t(n_components) * p]);
+      fields.push_back(std::move(field));
+    };
+    const auto vector = [&](const std::string &name, const auto &value_of) {
+      add(name, 3, false, [&](const unsigned int p, double *out) {
+        const Tensor<1, dim> v = value_of(p);
         for (unsigned int d = 0; d < dim; ++d)
-          patch.data(f++, 0) = particles.velocity[p][d];
-        const auto &s      = particles.stress[p];
-        patch.data(f++, 0) = s[0][0];
-        patch.data(f++, 0) = s[1][1];
-        patch.data(f++, 0) = s[2][2];
-        patch.data(f++, 0) = s[0][1];
-        if (dim == 3)
-          {
-            patch.data(f++, 0) = s[0][2];
-            patch.data(f++, 0) = s[1][2];
-          }
-        patch.data(f++, 0)    = -trace(s) / 3.;
-        patch.data(f++, 0)    = particles.mass[p];
-        patch.data(f++, 0)    = particles.volume[p];
-        patch.data(f++, 0)    = particles.material_id[p];
-        patch.data(f++, 0)    = particles.body_id[p];
-        patch.data(f++, 0)    = particles.free_surface[p];
-        double in_plane_trace = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-          in_plane_trace += s[d][d];
-        NodalPointFields fields = {{0., -in_plane_trace / dim}};
-        if (grid != nullptr && nodes != nullptr)
-          fields = nodal_point_fields(*grid, *nodes, particles, p);
-        patch.data(f++, 0) = fields[0];
-        patch.data(f++, 0) = fields[1];
-        // q = sqrt(3 J2) of the whole (3 x 3, plane strain's sigma_zz
-        // included) stress: the soil's deviator stress.
-        const SymmetricTensor<2, 3> deviator
-          = s - trace(s) / 3. * unit_symmetric_tensor<3>();
-        patch.data(f++, 0) = std::sqrt(1.5 * (deviator * deviator));
-        if (with_plasticity)
-          {
-            patch.data(f++, 0) = particles.plastic_strain[p];
-            patch.data(f++, 0) = particles.yielding[p];
-          }
-        if (with_displacement)
+          out[d] = v[d];
+        for (unsigned int d = dim; d < 3; ++d)
+          out[d] = 0;
+      });
+    };
+    const auto scalar
+      = [&](const std::string &name, const bool integer, const auto &value_of) {
+          add(name, 1, integer, [&](const unsigned int p, double *out) {
+            out[0] = value_of(p);
+          });
+        };
+
+    vector("velocity",
+           [&](const unsigned int p) { return particles.velocity[p]; });
+    // The whole 3 x 3 stress (plane strain's sigma_zz included), row by
+    // row, as VTK reads a tensor.
+    add("stress", 9, false, [&](const unsigned int p, double *out) {
+      const auto &s = particles.stress[p];
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          out[3 * i + j] = s[i][j];
+    });
+    scalar("pressure", false, [&](const unsigned int p) {
+      return -trace(particles.stress[p]) / 3.;
+    });
+    scalar("mass", false, [&](const unsigned int p) {
+      return particles.mass[p];
+    });
+    scalar("volume", false, [&](const unsigned int p) {
+      return particles.volume[p];
+    });
+    scalar("material_id", true, [&](const unsigned int p) {
+      return particles.material_id[p];
+    });
+    scalar("body_id", true, [&](const unsigned int p) {
+      return particles.body_id[p];
+    });
+    scalar("free_surface", true, [&](const unsigned int p) {
+      return particles.free_surface[p];
+    });
+    std::vector<NodalPointFields> nodal(n);
+    for (unsigned int p = 0; p < n; ++p)
+      if (grid != nullptr && nodes != nullptr)
+        nodal[p] = nodal_point_fields(*grid, *nodes, particles, p);
+      else
+        {
+          double in_plane_trace = 0;
           for (unsigned int d = 0; d < dim; ++d)
-            patch.data(f++, 0)
-              = particles.position[p][d] - particles.initial_position[p][d];
+            in_plane_trace += particles.stress[p][d][d];
+          nodal[p] = {{0., -in_plane_trace / dim}};
+        }
+    scalar("vorticity", false, [&](const unsigned int p) {
+      return nodal[p][0];
+    });
+    scalar("projected_pressure", false, [&](const unsigned int p) {
+      return nodal[p][1];
+    });
+    // q = sqrt(3 J2) of the whole (3 x 3, plane strain's sigma_zz
+    // included) stress: the soil's deviator stress.
+    scalar("von_mises", false, [&](const unsigned int p) {
+      const auto                 &s = particles.stress[p];
+      const SymmetricTensor<2, 3> deviator
+        = s - trace(s) / 3. * unit_symmetric_tensor<3>();
+      return std::sqrt(1.5 * (deviator * deviator));
+    });
+    if (particles.has_plasticity())
+      {
+        scalar("plastic_strain", false, [&](const unsigned int p) {
+          return particles.plastic_strain[p];
+        });
+        scalar("yielding", true, [&](const unsigned int p) {
+          return particles.yielding[p];
+        });
       }
+    if (particles.has_initial_position())
+      vector("displacement", [&](const unsigned int p) {
+        return particles.position[p] - particles.initial_position[p];
+      });
   }
+
+
+
+  namespace
+  {
+    /// The type="..." Name="..." [NumberOfComponents="..."] attributes of
+    /// a field's DataArray.
+    template <typename FieldType>
+    std::string
+    array_attributes(const FieldType &field)
+    {
+      std::string a = std::string("type=\"")
+                      + (field.integer ? "Int32" : "Float32") + "\" Name=\""
+                      + field.name + "\"";
+      if (field.n_components > 1)
+        a += " NumberOfComponents=\"" + std::to_string(field.n_components)
+             + "\"";
+      return a;
+    }
+
+    /// The PointData element's attributes naming the active arrays.
+    std::string
+    active_arrays()
+    {
+      return "Scalars=\"pressure\" Vectors=\"velocity\" "
+             "Tensors=\"stress\"";
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::write_vtu(std::ostream &out) const
+  {
+    const unsigned int n = positions.size() / 3;
+    write_vtu_header(out, n, n);
+    write_vtu_binary_array(out,
+                           "type=\"Float32\" NumberOfComponents=\"3\"",
+                           std::vector<float>(positions.begin(),
+                                              positions.end()));
+    out << "</Points>\n<Cells>\n";
+    // One vertex cell (VTK_VERTEX) per point.
+    std::vector<std::int32_t> connectivity(n), offsets(n);
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        connectivity[p] = p;
+        offsets[p]      = p + 1;
+      }
+    write_vtu_binary_array(out,
+                           "type=\"Int32\" Name=\"connectivity\"",
+                           connectivity);
+    write_vtu_binary_array(out, "type=\"Int32\" Name=\"offsets\"", offsets);
+    write_vtu_binary_array(out,
+                           "type=\"UInt8\" Name=\"types\"",
+                           std::vector<std::uint8_t>(n, 1));
+    out << "</Cells>\n<PointData " << active_arrays() << ">\n";
+    for (const auto &field : fields)
+      if (field.integer)
+        write_vtu_binary_array(out,
+                               array_attributes(field),
+                               std::vector<std::int32_t>(field.values.begin(),
+                                                         field.values.end()));
+      else
+        write_vtu_binary_array(out,
+                               array_attributes(field),
+                               std::vector<float>(field.values.begin(),
+                                                  field.values.end()));
+    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::write_pvtu_record(
+    std::ostream                   &out,
+    const std::vector<std::string> &pieces) const
+  {
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\">\n"
+           "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData "
+        << active_arrays() << ">\n";
+    for (const auto &field : fields)
+      out << "<PDataArray " << array_attributes(field) << "/>\n";
+    out << "</PPointData>\n<PPoints>\n<PDataArray type=\"Float32\" "
+           "NumberOfComponents=\"3\"/>\n</PPoints>\n";
+    for (const auto &piece : pieces)
+      out << "<Piece Source=\"" << piece << "\"/>\n";
+    out << "</PUnstructuredGrid>\n</VTKFile>\n";
+  }
+
+
 
   template <int dim>
   void
   ParticleOutput<dim>::write_xdmf(XdmfSeries &series, const double time) const
   {
-    const unsigned int  n = patches.size();
-    std::vector<double> positions(3 * n, 0.);
-    for (unsigned int p = 0; p < n; ++p)
-      for (unsigned int d = 0; d < dim; ++d)
-        positions[3 * p + d] = patches[p].vertices[0][d];
-    const auto                     names = get_dataset_names();
-    std::vector<XdmfSeries::Field> fields;
-    // The vectors (velocity, displacement) as 3-vectors, the rest scalars.
-    for (unsigned int f = 0; f < names.size();)
-      if (f + 1 < names.size() && names[f + 1] == names[f])
-        {
-          fields.push_back(
-            {names[f], 3, false, std::vector<double>(3 * n, 0.)});
-          for (unsigned int p = 0; p < n; ++p)
-            for (unsigned int d = 0; d < dim; ++d)
-              fields.back().values[3 * p + d] = patches[p].data(f + d, 0);
-          f += dim;
-        }
-      else
-        {
-          fields.push_back({names[f], 1, false, std::vector<double>(n)});
-          for (unsigned int p = 0; p < n; ++p)
-            fields.back().values[p] = patches[p].data(f, 0);
-          ++f;
-        }
-    series.write(time, positions, XdmfSeries::CellType::vertex, {}, fields);
-  }
-
-
-
-  template <int dim>
-  std::vector<std::string>
-  ParticleOutput<dim>::get_dataset_names() const
-  {
-    std::vector<std::string> names(dim, "velocity");
-    for (const auto &n : {"stress_xx", "stress_yy", "stress_zz", "stress_xy"})
-      names.emplace_back(n);
-    if (dim == 3)
-      {
-        names.emplace_back("stress_xz");
-        names.emplace_back("stress_yz");
-      }
-    for (const auto &n : {"pressure",
-                          "mass",
-                          "volume",
-                          "material_id",
-                          "body_id",
-                          "free_surface",
-                          "vorticity",
-                          "projected_pressure",
-                          "von_mises"})
-      names.emplace_back(n);
-    if (with_plasticity)
-      {
-        names.emplace_back("plastic_strain");
-        names.emplace_back("yielding");
-      }
-    if (with_displacement)
-      names.resize(names.size() + dim, "displacement");
-    return names;
-  }
-
-  template <int dim>
-  std::vector<
-    std::tuple<unsigned int,
-               unsigned int,
-               std::string,
-               DataComponentInterpretation::DataComponentInterpretation>>
-  ParticleOutput<dim>::get_nonscalar_data_ranges() const
-  {
-    std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-      ranges = {std::make_tuple(
-        0u,
-        dim - 1u,
-        std::string("velocity"),
-        DataComponentInterpretation::component_is_part_of_vector)};
-    if (with_displacement)
-      {
-        const unsigned int first = get_dataset_names().size() - dim;
-        ranges.emplace_back(
-          first,
-          first + dim - 1,
-          std::string("displacement"),
-          DataComponentInterpretation::component_is_part_of_vector);
-      }
-    return ranges;
+    std::vector<XdmfSeries::Field> xdmf_fields;
+    for (const auto &field : fields)
+      xdmf_fields.push_back(
+        {field.name, field.n_components, false, field.values});
+    series.write(
+      time, positions, XdmfSeries::CellType::vertex, {}, xdmf_fields);
   }
 
 

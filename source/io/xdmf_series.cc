@@ -233,7 +233,9 @@ namespace fsgmpm
               {
                 const unsigned int n = f.on_cells ? r.n_cells : r.n_nodes;
                 out << "  <Attribute Name=\"" << f.name << "\" AttributeType=\""
-                    << (f.n_components == 1 ? "Scalar" : "Vector")
+                    << (f.n_components == 1
+                          ? "Scalar"
+                          : (f.n_components == 9 ? "Tensor" : "Vector"))
                     << "\" Center=\"" << (f.on_cells ? "Cell" : "Node")
                     << "\">\n    <DataItem Dimensions=\"" << n;
                 if (f.n_components > 1)

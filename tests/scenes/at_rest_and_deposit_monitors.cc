@@ -79,3 +79,60 @@ end
   EXPECT_NEAR(m[0], 0.7, 0.005);
   EXPECT_NEAR(m[1], 0.2, 0.005);
 }
+
+
+
+// The potential energy during a gravity ramp is that of the gravity acting
+// at the time (-sum m g(t).x, g(t) = g t / T), the field whose work the
+// external work books; after the ramp that of the full gravity.
+TEST(AtRest, PotentialEnergyFollowsTheGravityRamp)
+{
+  auto         prm = test_tools::make_parameters(R"(
+subsection Simulation
+  set End time = 0.3
+  set Gravity ramp time = 0.2
+end
+subsection Grid
+  set Upper corner = 1, 0.4
+  set Subdivisions = 40, 16
+  set Boundary conditions = 0: roller, 1: roller, 2: fixed
+end
+subsection Bodies
+  subsection Body 0
+    set Shape = column
+    set Column base corner = 0.3, 0
+    set Column width = 0.4
+    set Column aspect ratio = 0.5
+    subsection Linear elastic
+      set Young's modulus = 1e7
+    end
+  end
+end
+)");
+  Simulator<2> sim(*prm);
+  const auto   potential = [&](const double g) {
+    double e = 0;
+    for (unsigned int p = 0; p < sim.get_particles().size(); ++p)
+      e += sim.get_particles().mass[p] * g * sim.get_particles().position[p][1];
+    return e;
+  };
+  EXPECT_EQ(sim.get_monitors().potential_energy, 0.);
+  bool checked_ramp = false;
+  while (sim.advance())
+    if (!checked_ramp && sim.get_time() >= 0.1)
+      {
+        const double expected = potential(9.81 * sim.get_time() / 0.2);
+        std::cout << "[ measured ] potential energy at " << sim.get_time()
+                  << " s of a 0.2 s ramp: "
+                  << sim.get_monitors().potential_energy << " J/m, -m g(t) y "
+                  << expected << " J/m" << std::endl;
+        EXPECT_NEAR(sim.get_monitors().potential_energy,
+                    expected,
+                    1e-12 * expected);
+        checked_ramp = true;
+      }
+  EXPECT_TRUE(checked_ramp);
+  EXPECT_NEAR(sim.get_monitors().potential_energy,
+              potential(9.81),
+              1e-12 * potential(9.81));
+}

@@ -12,6 +12,8 @@ Usage: point_fields.py FSGMPM SOURCE_DIR
   at rest (K0) has not yielded, collapsing (0.05 s) some points yield, and
   those have a positive accumulated plastic strain (the value itself is
   tested against simple shear in the Mohr-Coulomb unit test).
+- stress: one 3 x 3 tensor array per point (VTK's tensor layout), symmetric,
+  with plane strain's sigma_zz; pressure its -trace/3; ids and flags Int32.
 - von_mises: q = sqrt(3 J2) of the whole stress (sigma_zz included), against
   the stress components of the same VTU file, on the K0 column of
   prm/granular_column_collapse.prm (q = (1 - K0) sigma_v at rest: not zero).
@@ -78,7 +80,24 @@ check("collapsing soil: yield flags 0 or 1, some points yielding",
 check("collapsing soil: plastic strain >= 0, > 0 where yielding",
       np.all(ep >= 0) and np.all(ep[flag == 1] > 0),
       "(largest %.3g)" % ep.max())
-sxx, syy, szz, sxy = (soil["stress_" + c] for c in ("xx", "yy", "zz", "xy"))
+stress = soil["stress"].reshape(-1, 3, 3)
+check("stress: one 3 x 3 tensor per point, symmetric, sigma_zz of plane "
+      "strain present, no out-of-plane shear",
+      soil["stress"].shape == (len(soil["Points"]), 9)
+      and np.array_equal(stress, np.transpose(stress, (0, 2, 1)))
+      and np.all(stress[:, 2, 2] < 0) and np.all(stress[:, 0, 2] == 0)
+      and np.all(stress[:, 1, 2] == 0),
+      "(sigma_zz from %.3g to %.3g Pa)" % (stress[:, 2, 2].min(),
+                                           stress[:, 2, 2].max()))
+check("pressure = -trace(stress)/3",
+      np.max(np.abs(soil["pressure"] + np.trace(stress, axis1=1, axis2=2) / 3))
+      <= 1e-6 * np.max(np.abs(soil["pressure"])))
+integers = ("material_id", "body_id", "free_surface", "yielding")
+check("ids and flags are Int32",
+      all(soil[k].dtype == np.int32 for k in integers),
+      "(" + ", ".join("%s %s" % (k, soil[k].dtype) for k in integers) + ")")
+sxx, syy, szz, sxy = stress[:, 0, 0], stress[:, 1, 1], stress[:, 2, 2], \
+    stress[:, 0, 1]
 mean = (sxx + syy + szz) / 3
 q = np.sqrt(1.5 * ((sxx - mean) ** 2 + (syy - mean) ** 2 + (szz - mean) ** 2
                    + 2 * sxy ** 2))

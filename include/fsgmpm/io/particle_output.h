@@ -1,8 +1,6 @@
 #ifndef fsgmpm_io_particle_output_h
 #define fsgmpm_io_particle_output_h
 
-#include <deal.II/base/data_out_base.h>
-
 #include <fsgmpm/grid/background_grid.h>
 #include <fsgmpm/grid/nodal_fields.h>
 #include <fsgmpm/io/xdmf_series.h>
@@ -16,19 +14,34 @@
 namespace fsgmpm
 {
   /**
-   * VTU output of the material points. The store is not deal.II's
-   * ParticleHandler, so it provides its own patches (one vertex each) to
-   * DataOutInterface<0,dim>.
+   * Output of the material points: one VTU file (or one piece per MPI
+   * process and a .pvtu record), or a step of an HDF5 + XDMF series. The
+   * store is not deal.II's ParticleHandler, and deal.II's DataOutBase
+   * writes every field as Float32 scalars or vectors, so the points are
+   * written here: one vertex cell per point, the stress as one 3 x 3
+   * tensor (sigma_zz of plane strain included; ParaView's tensor
+   * filters and glyphs take it whole), the integer fields (material_id,
+   * body_id, free_surface, yielding) as Int32, the rest as Float32.
    */
   template <int dim>
-  class ParticleOutput : public DataOutInterface<0, dim>
+  class ParticleOutput
   {
   public:
     /// The fields of a point that come from the nodal values around it:
     /// the vorticity and the pressure of the projected stress.
     using NodalPointFields = std::array<double, 2>;
 
-    /// Build the patches from the current state of @p particles; with
+    /// One array of point data: n_components (1, 3 or 9) values per
+    /// point, point after point.
+    struct Field
+    {
+      std::string         name;
+      unsigned int        n_components = 1;
+      bool                integer      = false;
+      std::vector<double> values;
+    };
+
+    /// Collect the fields from the current state of @p particles; with
     /// @p grid and @p nodes also nodal_point_fields() of each point (MPI:
     /// the nodal values are exact around the points a process owns), zero
     /// vorticity and the point's own pressure without.
@@ -53,33 +66,32 @@ namespace fsgmpm
                        const ParticleStore<dim>  &particles,
                        const unsigned int         p);
 
-    /// The patches as a step of an HDF5 + XDMF series (Output/Format =
-    /// hdf5): the same fields as the VTU files, velocity as a 3-vector.
+    /// The collected points as a compressed binary VTU file.
+    void
+    write_vtu(std::ostream &out) const;
+
+    /// The .pvtu record naming the @p pieces (the VTU files of the
+    /// processes); the fields declared are this process's.
+    void
+    write_pvtu_record(std::ostream                   &out,
+                      const std::vector<std::string> &pieces) const;
+
+    /// The collected points as a step of an HDF5 + XDMF series
+    /// (Output/Format = hdf5): the same fields as the VTU files.
     void
     write_xdmf(XdmfSeries &series, const double time) const;
 
-  private:
-    const std::vector<DataOutBase::Patch<0, dim>> &
-    get_patches() const override
+    /// The point data in the order written.
+    const std::vector<Field> &
+    get_fields() const
     {
-      return patches;
+      return fields;
     }
-    std::vector<std::string>
-    get_dataset_names() const override;
-    std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-    get_nonscalar_data_ranges() const override;
 
-    std::vector<DataOutBase::Patch<0, dim>> patches;
-    /// Whether the points keep their initial positions (a displacement
-    /// field follows the others).
-    bool with_displacement = false;
-    /// Whether the points keep their plastic state (plastic_strain and
-    /// yielding fields).
-    bool with_plasticity = false;
+  private:
+    /// The positions, padded to three coordinates.
+    std::vector<double> positions;
+    std::vector<Field>  fields;
   };
 
   /**

@@ -32,7 +32,7 @@ namespace fsgmpm
     struct Field
     {
       std::string name;
-      /// 1 (scalar) or 3 (vector).
+      /// 1 (scalar), 3 (vector) or 9 (a 3 x 3 tensor, row by row).
       unsigned int n_components = 1;
       /// Values at the cells instead of the nodes.
       bool on_cells = false;
