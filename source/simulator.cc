@@ -1,14 +1,14 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/broadcast_vector.h>
 #include <fsgmpm/base/compensated_sum.h>
+#include <fsgmpm/base/format.h>
 #include <fsgmpm/base/version.h>
 #include <fsgmpm/grid/mesh_generation.h>
-#include <fsgmpm/io/format.h>
 #include <fsgmpm/io/membrane_output.h>
 #include <fsgmpm/io/monitor_file.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
-#include <fsgmpm/parallel/broadcast_vector.h>
 #include <fsgmpm/parallel/distributed_points.h>
 #include <fsgmpm/parallel/process_count.h>
 #include <fsgmpm/particles/body_filler.h>

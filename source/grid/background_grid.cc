@@ -3,8 +3,8 @@
 
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <fsgmpm/base/broadcast_vector.h>
 #include <fsgmpm/grid/background_grid.h>
-#include <fsgmpm/parallel/broadcast_vector.h>
 
 #include <algorithm>
 #include <cstdint>

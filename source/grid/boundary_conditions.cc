@@ -1,8 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/format.h>
 #include <fsgmpm/grid/boundary_conditions.h>
-#include <fsgmpm/io/format.h>
 
 #include <sstream>
 

@@ -5,8 +5,8 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <fsgmpm/grid/gmsh_reader.h>
 #include <fsgmpm/grid/mesh_generation.h>
-#include <fsgmpm/io/gmsh_reader.h>
 
 #include <algorithm>
 #include <cstdint>

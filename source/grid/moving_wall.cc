@@ -2,8 +2,8 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/format.h>
 #include <fsgmpm/grid/moving_wall.h>
-#include <fsgmpm/io/format.h>
 
 #include <algorithm>
 #include <cmath>

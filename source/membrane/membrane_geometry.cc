@@ -2,11 +2,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/base/real_interval.h>
-#include <fsgmpm/io/gmsh_surface.h>
+#include <fsgmpm/membrane/gmsh_surface.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/particles/body_shape.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/monitors/dam_break_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>

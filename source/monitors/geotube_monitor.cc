@@ -1,8 +1,8 @@
 #include <fsgmpm/base/compensated_sum.h>
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/monitors/geotube_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
 #include <fsgmpm/particles/body_shape.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/monitors/monitor_factory.h>
 #include <fsgmpm/monitors/scene_monitors.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fsgmpm/base/format.h>
 #include <fsgmpm/base/real_interval.h>
-#include <fsgmpm/io/format.h>
 #include <fsgmpm/run/time_step_control.h>
 
 #include <algorithm>

@@ -1,11 +1,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/format.h>
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/base/real_interval.h>
-#include <fsgmpm/io/format.h>
 #include <fsgmpm/materials/material_factory.h>
 #include <fsgmpm/scene/body.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/shape_factory.h>
 
 

@@ -1,12 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <fsgmpm/base/format.h>
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/base/real_interval.h>
-#include <fsgmpm/io/format.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/monitors/scene_monitors.h>
 #include <fsgmpm/scene/body.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/scene/parameters.h>
 
 #include <limits>

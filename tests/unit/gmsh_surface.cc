@@ -1,5 +1,5 @@
 // A membrane surface from Gmsh with second-order (6-node) triangles:
-// the reader (io/gmsh_surface.h) and a degree-2 Membrane on the curved
+// the reader (membrane/gmsh_surface.h) and a degree-2 Membrane on the curved
 // geometry. (a) The elliptic cylinder of the geotube A5.56 (written by
 // tests/meshes/make_elliptic_cylinder.py in formats 4.1 and 2.2) gives the
 // corners as the triangulation's vertices and every edge's middle node, all
@@ -21,7 +21,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <fsgmpm/io/gmsh_surface.h>
+#include <fsgmpm/membrane/gmsh_surface.h>
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/membrane/membrane_geometry.h>
 #include <fsgmpm/scene/parameter_path.h>

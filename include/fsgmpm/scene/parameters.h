@@ -4,12 +4,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/grid/moving_wall_parameters.h>
 #include <fsgmpm/grid/wall_condition.h>
 #include <fsgmpm/run/dynamic_relaxation.h>
 #include <fsgmpm/run/stability_guard.h>
 #include <fsgmpm/run/time_step_control.h>
-#include <fsgmpm/scene/parameter_parsing.h>
 #include <fsgmpm/step/stress_integration.h>
 
 #include <map>

@@ -1,5 +1,5 @@
-#ifndef fsgmpm_parallel_broadcast_vector_h
-#define fsgmpm_parallel_broadcast_vector_h
+#ifndef fsgmpm_base_broadcast_vector_h
+#define fsgmpm_base_broadcast_vector_h
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>

@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <fsgmpm/scene/parameter_parsing.h>
+#include <fsgmpm/base/parameter_parsing.h>
 
 #include <cmath>
 #include <sstream>

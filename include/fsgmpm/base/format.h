@@ -1,5 +1,5 @@
-#ifndef fsgmpm_io_format_h
-#define fsgmpm_io_format_h
+#ifndef fsgmpm_base_format_h
+#define fsgmpm_base_format_h
 
 #include <deal.II/base/point.h>
 

@@ -1,5 +1,5 @@
-#ifndef fsgmpm_io_gmsh_surface_h
-#define fsgmpm_io_gmsh_surface_h
+#ifndef fsgmpm_membrane_gmsh_surface_h
+#define fsgmpm_membrane_gmsh_surface_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>

@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fsgmpm/io/gmsh_surface.h>
+#include <fsgmpm/membrane/gmsh_surface.h>
 
 #include <array>
 #include <fstream>

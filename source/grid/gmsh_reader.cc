@@ -2,7 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
-#include <fsgmpm/io/gmsh_reader.h>
+#include <fsgmpm/grid/gmsh_reader.h>
 
 #include <fstream>
 #include <sstream>

@@ -1,5 +1,5 @@
-#ifndef fsgmpm_scene_parameter_parsing_h
-#define fsgmpm_scene_parameter_parsing_h
+#ifndef fsgmpm_base_parameter_parsing_h
+#define fsgmpm_base_parameter_parsing_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>

@@ -1,5 +1,5 @@
-#ifndef fsgmpm_io_gmsh_reader_h
-#define fsgmpm_io_gmsh_reader_h
+#ifndef fsgmpm_grid_gmsh_reader_h
+#define fsgmpm_grid_gmsh_reader_h
 
 #include <deal.II/grid/tria.h>
 
@@ -12,7 +12,7 @@ namespace fsgmpm
   /**
    * Read the Gmsh file @p file_name into @p triangulation (the background
    * mesh, dim = spacedim = 2 or 3; membrane surfaces, which may be of
-   * second order, have their own reader, io/gmsh_surface.h). Any
+   * second order, have their own reader, membrane/gmsh_surface.h). Any
    * failure (a missing or unreadable file, a file that is not a mesh, a
    * mesh of other cells or dimension, no cells) throws an ExcMessage that
    * names the parameter @p parameter (e.g. "Grid/Mesh file") and says that
