@@ -1,7 +1,7 @@
+#include <fsgmpm/base/parallel_reductions.h>
 #include <fsgmpm/base/parameter_parsing.h>
 #include <fsgmpm/monitors/dam_break_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
-#include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>
 
@@ -48,7 +48,7 @@ namespace fsgmpm
     // In parallel (a maximum is exact: the same for any number of threads),
     // and a point's spacing (a root per point, a cube root in 3D) only for
     // the points in the bottom row or the wall's column.
-    const auto maxima = CellLoops::parallel_maxima<2>(
+    const auto maxima = Reductions::parallel_maxima<2>(
       particles.size(), {{0., 0.}}, [&](const unsigned int p, auto &m) {
         if (particles.free_surface[p])
           return;

@@ -1,6 +1,6 @@
+#include <fsgmpm/base/parallel_reductions.h>
 #include <fsgmpm/monitors/deposit_monitor.h>
 #include <fsgmpm/monitors/monitor_factory.h>
-#include <fsgmpm/step/cell_loops.h>
 
 #include <algorithm>
 
@@ -21,7 +21,7 @@ namespace fsgmpm
   {
     const ParticleStore<dim> &particles = context.particles;
     // In parallel: a maximum is exact, the same for any number of threads.
-    const auto maxima = CellLoops::parallel_maxima<2>(
+    const auto maxima = Reductions::parallel_maxima<2>(
       particles.size(), {{0., 0.}}, [&](const unsigned int p, auto &m) {
         const double half_spacing
           = half_point_spacing<dim>(particles.volume[p]);

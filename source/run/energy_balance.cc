@@ -1,6 +1,6 @@
 #include <fsgmpm/base/compensated_sum.h>
+#include <fsgmpm/base/parallel_reductions.h>
 #include <fsgmpm/run/energy_balance.h>
-#include <fsgmpm/step/cell_loops.h>
 
 #include <array>
 #include <cmath>
@@ -20,12 +20,12 @@ namespace fsgmpm
                    const std::vector<std::uint8_t>              *counted_nodes)
     {
       // Each cell's points summed plainly, the cells compensated (in fixed
-      // chunks, in parallel: CellLoops::compensated_sums): the energies do
+      // chunks, in parallel: Reductions::compensated_sums): the energies do
       // not depend on the order of the cells, on how they are split over
       // processes or on the number of threads.
       const auto &cells = particles.occupied_cells;
       const auto  cell_sums // kinetic, strain, potential
-        = CellLoops::compensated_sums<3>(
+        = Reductions::compensated_sums<3>(
           cells.size(), [&](const unsigned int i, auto &sums) {
             const unsigned int c = cells[i];
             double             k = 0, s = 0, g = 0;
@@ -62,7 +62,7 @@ namespace fsgmpm
         }
       // Eq. (30)'s kinetic energy of the grid, compensated.
       if (nodes)
-        sums.push_back(CellLoops::compensated_sums<1>(
+        sums.push_back(Reductions::compensated_sums<1>(
           nodes->active_nodes.size(), [&](const unsigned int a, auto &sum) {
             const unsigned int i = nodes->active_nodes[a];
             if (counted_nodes == nullptr || (*counted_nodes)[i])
