@@ -21,12 +21,11 @@ namespace fsgmpm
     const uLong        raw_size    = values.size() * sizeof(T);
     uLongf             packed_size = compressBound(raw_size);
     std::vector<Bytef> packed(packed_size);
-    const int          status
-      = compress2(packed.data(),
-                  &packed_size,
-                  reinterpret_cast<const Bytef *>(values.data()),
-                  raw_size,
-                  Z_DEFAULT_COMPRESSION);
+    const int          status = compress2(packed.data(),
+                                 &packed_size,
+                                 reinterpret_cast<const Bytef *>(values.data()),
+                                 raw_size,
+                                 Z_DEFAULT_COMPRESSION);
     AssertThrow(status == Z_OK,
                 ExcMessage("zlib could not compress a VTU output array."));
     AssertThrow(raw_size <= 0xffffffffu,
