@@ -225,7 +225,9 @@ namespace fsgmpm
                                               nodes,
                                               smoothing);
     if (membrane)
-      mpm_step->attach_membrane(*membrane, membrane_split_length);
+      mpm_step->attach_membrane(*membrane,
+                                membrane_split_length,
+                                membrane_impermeable);
     if (partition)
       mpm_step->attach_partition(*partition);
 
@@ -475,6 +477,7 @@ namespace fsgmpm
     AssertThrow(dim == 3 || membrane->is_closed_loop(),
                 ExcMessage("The membrane must be one closed loop."));
     membrane_split_length = description.split_fraction * h;
+    membrane_impermeable  = description.impermeable_to_points;
 
     // The nodes' cells, by whole-grid numbers: with windows process 0
     // (which alone holds the whole grid) finds them for all.
@@ -987,6 +990,7 @@ namespace fsgmpm
 
     particle_updates
       += partition ? n_before - result.lost_particles : particles.size();
+    membrane_crossings += result.membrane_crossings;
     time += dt;
     ++step;
     time_step_control.record_step(step);
@@ -1306,8 +1310,11 @@ namespace fsgmpm
     Utilities::System::get_memory_stats(memory);
     double peak_resident = 1024. * memory.VmHWM, total_resident = peak_resident;
     double largest_halo_fraction = halo_fraction;
+    double crossings             = membrane_crossings;
     if (partition)
       {
+        crossings
+          = Utilities::MPI::sum(crossings, partition->get_communicator());
         largest_halo_fraction
           = Utilities::MPI::max(halo_fraction, partition->get_communicator());
         bytes = Utilities::MPI::max(bytes, partition->get_communicator());
@@ -1352,6 +1359,7 @@ namespace fsgmpm
          {"mpi_imbalance", json_number(imbalance)},
          {"mpi_halo_fraction", json_number(largest_halo_fraction)},
          {"lost_particles", std::to_string(monitors.lost_particles)},
+         {"membrane_crossings_undone", json_number(crossings)},
          {"dt_min", json_number(time_step_control.dt_min())},
          {"dt_max", json_number(time_step_control.dt_max())},
          {"dt_last", json_number(time_step_control.dt())},

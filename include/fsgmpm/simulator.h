@@ -349,6 +349,8 @@ namespace fsgmpm
     /// longer than membrane_split_length are split.
     std::unique_ptr<Membrane<dim>> membrane;
     double                         membrane_split_length = 0;
+    /// Membrane/Impermeable to points.
+    bool membrane_impermeable = true;
     /// The outline the bodies with Shape = membrane fill (x-y, z range).
     std::vector<Point<2>>     membrane_outline;
     std::pair<double, double> membrane_z_range;
@@ -396,6 +398,8 @@ namespace fsgmpm
     std::unique_ptr<RunOutput<dim>> output;
     OutputSchedule                  output_schedule, checkpoint_schedule;
     unsigned long long              particle_updates = 0;
+    /// Points this process put back on their side of the membrane.
+    unsigned long long membrane_crossings = 0;
 
     /// Every parameter ("Section/Name", value), for the checkpoint.
     std::vector<std::pair<std::string, std::string>> parameter_listing;

@@ -238,6 +238,19 @@ namespace fsgmpm
                         "tension is "
                         "uniform, i.e. frictionless contact with the fill "
                         "(a fluid at rest carries no shear).");
+      prm.declare_entry("Impermeable to points",
+                        "true",
+                        Patterns::Bool(),
+                        "true: no material point passes through the "
+                        "membrane. The grid coupling alone lets a point near "
+                        "the membrane cross an element where the grid "
+                        "velocity in its cell differs from the membrane's "
+                        "(cells holding points of both sides); each point's "
+                        "path over a step is tested against the elements "
+                        "and a crossing point is put back on its side, its "
+                        "normal velocity relative to the membrane removed "
+                        "(booked as numerical dissipation). false: the "
+                        "coupling through the grid only (the paper's).");
       prm.declare_entry("Ground level",
                         "none",
                         Patterns::Anything(),
@@ -311,6 +324,7 @@ namespace fsgmpm
     properties.initial_strain  = prm.get_double("Initial strain");
     properties.element_degree  = prm.get_integer("Element degree");
     tangential_slip            = (prm.get("Tangential coupling") == "slip");
+    impermeable_to_points      = prm.get_bool("Impermeable to points");
     {
       const std::string g = Utilities::trim(prm.get("Ground level"));
       if (g != "none")

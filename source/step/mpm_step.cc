@@ -29,10 +29,14 @@ namespace fsgmpm
 
   template <int dim>
   void
-  MpmStep<dim>::attach_membrane(Membrane<dim> &m, const double split_length)
+  MpmStep<dim>::attach_membrane(Membrane<dim> &m,
+                                const double   split_length,
+                                const bool     impermeable_to_points)
   {
     membrane_coupling
       = std::make_unique<MembraneCoupling<dim>>(grid, m, split_length);
+    if (impermeable_to_points)
+      membrane_crossing = std::make_unique<MembraneCrossing<dim>>(m);
     if (partition != nullptr)
       membrane_coupling->attach_partition(*partition);
   }
@@ -360,6 +364,11 @@ namespace fsgmpm
     // their owners'.
     if (partition != nullptr)
       DistributedPoints::drop_ghosts(particles);
+    if (membrane_crossing)
+      {
+        TimerOutput::Scope scope(timer, "membrane");
+        membrane_crossing->remember_start(nodes, particles, dt);
+      }
     {
       TimerOutput::Scope scope(timer, "position_update");
       result.displacement_ratio
@@ -371,6 +380,16 @@ namespace fsgmpm
         result.displacement_ratio
           = std::max(result.displacement_ratio,
                      membrane_coupling->update_positions(nodes, dt));
+      }
+    // No point passes through the membrane (before the points are sorted
+    // into their new cells).
+    if (membrane_crossing && std::isfinite(result.displacement_ratio))
+      {
+        TimerOutput::Scope scope(timer, "membrane");
+        const auto         outcome
+          = membrane_crossing->keep_points_on_their_side(dt, particles);
+        result.membrane_crossings = outcome.corrected;
+        result.numerical_dissipation.add(outcome.kinetic_energy_removed);
       }
     // After a blow-up the positions are not finite and cannot be located;
     // run control stops the run on the ratio.

@@ -33,9 +33,11 @@ namespace fsgmpm
     std::string           mesh_file;
     /// Initial element length (0: 0.4 grid cells) and the length above
     /// which a cable is split (as a fraction of the grid cell size).
-    double             element_size    = 0;
-    double             split_fraction  = 0.5;
-    bool               tangential_slip = false;
+    double element_size    = 0;
+    double split_fraction  = 0.5;
+    bool   tangential_slip = false;
+    /// No material point passes through the membrane (MembraneCrossing).
+    bool               impermeable_to_points = true;
     double             ground_level = -std::numeric_limits<double>::infinity();
     double             ground_stiffness = 1e7;
     MembraneProperties properties;

@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fsgmpm/parallel/domain_partition.h>
+#include <fsgmpm/step/membrane_crossing.h>
 #include <fsgmpm/step/stages.h>
 
 #include <memory>
@@ -68,6 +69,8 @@ namespace fsgmpm
       double       displacement_ratio     = 0;
       unsigned int lost_particles         = 0;
       unsigned int membrane_nodes_outside = 0;
+      /// Points put back on their side of the membrane (MembraneCrossing).
+      unsigned int membrane_crossings = 0;
       /// (flagged, detecting) points of the free-surface detection.
       std::pair<unsigned int, unsigned int> free_surface = {0, 0};
       /// The step's energy losses at the points this process owns
@@ -89,9 +92,12 @@ namespace fsgmpm
 
     /// Couple a membrane (FEM-MPM, Eqs. 19-21) through a MembraneCoupling
     /// that the step owns; cables longer than @p split_length are split
-    /// when they stretch (0: never).
+    /// when they stretch (0: never). If @p impermeable_to_points, no point
+    /// passes through it (MembraneCrossing).
     void
-    attach_membrane(Membrane<dim> &membrane, const double split_length);
+    attach_membrane(Membrane<dim> &membrane,
+                    const double   split_length,
+                    const bool     impermeable_to_points = true);
 
     /**
      * MPI: the partition whose ghost-layer rim nodes are refreshed after
@@ -183,6 +189,7 @@ namespace fsgmpm
     SmoothingFields<dim>                         &smoothing;
     /// The attached membrane's coupling, if any.
     std::unique_ptr<MembraneCoupling<dim>> membrane_coupling;
+    std::unique_ptr<MembraneCrossing<dim>> membrane_crossing;
     const DomainPartition<dim>            *partition = nullptr;
 
     /// MPI: refresh the rim values of the nodal numerators and
