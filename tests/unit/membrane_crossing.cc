@@ -59,7 +59,7 @@ namespace
     for (const unsigned int x : {0u, 1u})
       for (const unsigned int y : {2u, 3u})
         for (const unsigned int z : {4u, 5u})
-          faces.push_back({x, y, z});
+          faces.push_back({{x, y, z}});
     std::map<std::pair<unsigned int, unsigned int>, unsigned int> middle;
     const auto mid = [&](unsigned int a, unsigned int b) {
       if (a > b)
@@ -76,10 +76,10 @@ namespace
         const unsigned int ab = mid(f[0], f[1]), bc = mid(f[1], f[2]),
                            ca = mid(f[2], f[0]);
         for (const std::array<unsigned int, 3> &t :
-             {std::array<unsigned int, 3>{f[0], ab, ca},
-              std::array<unsigned int, 3>{ab, f[1], bc},
-              std::array<unsigned int, 3>{ca, bc, f[2]},
-              std::array<unsigned int, 3>{ab, bc, ca}})
+             {std::array<unsigned int, 3>{{f[0], ab, ca}},
+              std::array<unsigned int, 3>{{ab, f[1], bc}},
+              std::array<unsigned int, 3>{{ca, bc, f[2]}},
+              std::array<unsigned int, 3>{{ab, bc, ca}}})
           {
             CellData<2> c(3);
             c.vertices = {t[0], t[1], t[2]};
@@ -185,7 +185,7 @@ namespace
     unsigned int       untouched_moved = 0;
     for (unsigned int p = 0; p < particles.size(); ++p)
       untouched_moved += particles.position[p] != moved[p];
-    std::printf("measured (%s): %u of %zu points on the wrong side without "
+    std::printf("measured (%s): %u of %u points on the wrong side without "
                 "the stage, %u with it; %u corrected; kinetic energy "
                 "removed %.3e J\n",
                 label,
