@@ -124,13 +124,16 @@ namespace fsgmpm
     double bin = 0;
     for (unsigned int e = 0; e < elements.size(); ++e)
       {
-        std::vector<Point<dim>> corners;
+        // The box of the element's nodes at the start and the end (no
+        // allocation per element and step).
+        const unsigned int first = elements[e][0];
+        swept[e] = BoundingBox<dim>({start_node[first], start_node[first]});
         for (const unsigned int a : elements[e])
           {
-            corners.push_back(start_node[a]);
-            corners.push_back(end_node[a]);
+            swept[e].merge_with(
+              BoundingBox<dim>({start_node[a], start_node[a]}));
+            swept[e].merge_with(BoundingBox<dim>({end_node[a], end_node[a]}));
           }
-        swept[e] = BoundingBox<dim>(corners);
         for (unsigned int d = 0; d < dim; ++d)
           {
             low[d]  = std::min(low[d], swept[e].lower_bound(d));
