@@ -400,6 +400,12 @@ def read_versions(path):
             for name, row in rows.items()}
 
 
+def release(version):
+    """The release of an fsgmpm --version line, without its build's commit:
+    "fsgmpm 0.1.0 (git 0123abcd)" -> "fsgmpm 0.1.0"."""
+    return re.sub(r"\s*\(git [^)]*\)\s*$", "", version)
+
+
 def write_versions(path, entries):
     lines = [
         "# Versions of the figures",
@@ -408,9 +414,9 @@ def write_versions(path, entries):
         "\"Figures\"); each PNG",
         "carries its version as the PNG text chunk `Software` and as a "
         "grey footer",
-        "(`doc/scripts/figure_stamp.py --read PNG` prints it). FSGMPM is "
-        "the executable",
-        "whose `--version` the version column gives; the commands run from "
+        "(`doc/scripts/figure_stamp.py --read PNG` prints it, the build's "
+        "commit included). FSGMPM is the executable",
+        "whose release the version column gives; the commands run from "
         "the source",
         "tree, WORK being the work directory of `make_figures.py` and OUT "
         "this one.",
@@ -534,7 +540,9 @@ def main():
             " (runs reused)" if reused else "")
         block = "```sh\n%s\n```" % "\n".join(
             figure_lines(f, args.threads, args.quick))
-        entries[f.name] = (version, made_by, wall, block)
+        # The table names the release; the build (its commit) is in the
+        # PNG's own stamp, which figure_stamp.py --read prints.
+        entries[f.name] = (release(version), made_by, wall, block)
         write_versions(versions, entries)
         print("  wrote %s (%s, %s)" % (target, version, wall), flush=True)
     write_versions(versions, entries)
