@@ -710,9 +710,10 @@ namespace fsgmpm
   double
   Membrane<dim>::strain_energy() const
   {
-    // 2D: T^2 L / (2 EA); 3D plane stress in principal values.
+    // 2D: T^2 L / (2 EA); 3D plane stress in principal values; plus the
+    // ground penalty's spring energy.
     const double EA = properties.axial_stiffness, nu = properties.poisson_ratio;
-    double       w = 0;
+    double       w = ground.energy(*this);
     for (unsigned int e = 0; e < elements.size(); ++e)
       {
         const double s1 = tension[e], s2 = minor_tension[e];

@@ -39,6 +39,21 @@ namespace fsgmpm
 
 
   template <int dim>
+  double
+  MembraneGround<dim>::energy(const Membrane<dim> &membrane) const
+  {
+    double w = 0;
+    if (active())
+      for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
+        if (membrane.position[a][1] < level)
+          w += 0.5 * node_stiffness(membrane, a)
+               * std::pow(level - membrane.position[a][1], 2);
+    return w;
+  }
+
+
+
+  template <int dim>
   void
   MembraneGround<dim>::add_stiffness(
     const Membrane<dim>                  &membrane,

@@ -149,7 +149,8 @@ namespace fsgmpm
                         "membrane would make the time-step limit fictitious "
                         "inertia (no weight, no momentum) so that the "
                         "material points' limit governs; changes the motion "
-                        "but not the static state. Quasi-static runs only.");
+                        "but not the static state. Quasi-static runs only, and "
+                        "only with damping (local or kinetic).");
     }
     prm.leave_subsection();
 
@@ -348,6 +349,16 @@ namespace fsgmpm
                 ExcMessage("Damping/Local damping coefficient must lie in "
                            "[0, 1); got "
                            + std::to_string(local_damping) + "."));
+    // The fictitious inertia is recomputed every step and is not in the
+    // points' momentum: undamped, it feeds the membrane's stiff directions
+    // (the geotube released with it and no damping blew up at 0.16 s).
+    AssertThrow(!mass_scaling || local_damping > 0
+                  || relaxation.kinetic_damping,
+                ExcMessage("Damping/Mass scaling is a dynamic-relaxation "
+                           "device and needs damping: set Damping/Local "
+                           "damping coefficient > 0 (0.7 in the shipped "
+                           "geotubes) or Damping/Kinetic damping = true, or "
+                           "set Mass scaling = false for a dynamic run."));
 
     prm.enter_subsection("Grid");
     grid_type           = prm.get("Type");

@@ -124,6 +124,7 @@ EDGE_INTERPLAY = [
     (r"Newtonian fluid/Bulk modulus$", r"too small for the initial pressure"),
     (r"^Membrane/(Circumference|Enclosed area)$", r"cannot enclose"),
     (r"Mohr-Coulomb/Friction angle$", r"Cohesion are both 0"),
+    (r"^Damping/Local damping coefficient$", r"Mass scaling is a dynamic"),
 ]
 
 

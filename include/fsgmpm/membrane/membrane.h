@@ -173,6 +173,7 @@ namespace fsgmpm
 
     double
     kinetic_energy() const;
+    /// The elements' elastic energy plus the ground penalty's.
     double
     strain_energy() const;
 

@@ -46,6 +46,12 @@ namespace fsgmpm
     add_forces(const Membrane<dim>         &membrane,
                std::vector<Tensor<1, dim>> &force) const;
 
+    /// The penalty's stored energy, sum of k_a (level - y_a)^2 / 2 over the
+    /// nodes below the ground (a spring: in the energy balance's strain
+    /// energy).
+    double
+    energy(const Membrane<dim> &membrane) const;
+
     /// Adds node_stiffness() along y to every node, also far above the
     /// ground (for the nodal time-step bound, Membrane::nodal_stiffness()).
     void
