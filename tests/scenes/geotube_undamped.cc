@@ -18,6 +18,7 @@
 // mass scaling on (the refusal lifted) fail: slip creates 2.68 times the
 // work by 1 s, no-slip loses 0.50 of it by 0.1 s.
 
+#include <fsgmpm/scene/parameter_path.h>
 #include <fsgmpm/simulator.h>
 #include <gtest/gtest.h>
 
@@ -37,33 +38,19 @@ namespace
                    const std::string &coupling)
   {
     auto prm = test_tools::make_parameters_from_scene("geotube_A3.36.prm");
-    prm->enter_subsection("Simulation");
-    prm->set("End time", end_time);
-    prm->set("Termination", "end_time");
+    set_parameter(*prm, "Simulation/End time", end_time);
+    set_parameter(*prm, "Simulation/Termination", "end_time");
     if (coupling == "no-slip")
-      prm->set("Stress integration", "nodal projection");
-    prm->leave_subsection();
-    prm->enter_subsection("Damping");
-    prm->set("Local damping coefficient", 0.);
-    prm->set("Mass scaling", false);
-    prm->leave_subsection();
-    prm->enter_subsection("Grid");
-    prm->set("Cell size", cell_size);
-    prm->leave_subsection();
-    prm->enter_subsection("Membrane");
-    prm->set("Tangential coupling", coupling);
-    prm->leave_subsection();
-    prm->enter_subsection("Bodies");
-    prm->enter_subsection("Body 0");
-    prm->enter_subsection("Newtonian fluid");
-    prm->set("Bulk modulus", 2.7e7);
-    prm->leave_subsection();
-    prm->leave_subsection();
-    prm->leave_subsection();
-    prm->enter_subsection("Output");
-    prm->set("Directory", "output_geotube_undamped_" + coupling);
-    prm->set("Quiet", true);
-    prm->leave_subsection();
+      set_parameter(*prm, "Simulation/Stress integration", "nodal projection");
+    set_parameter(*prm, "Damping/Local damping coefficient", 0.);
+    set_parameter(*prm, "Damping/Mass scaling", "false");
+    set_parameter(*prm, "Grid/Cell size", cell_size);
+    set_parameter(*prm, "Membrane/Tangential coupling", coupling);
+    set_parameter(*prm, "Bodies/Body 0/Newtonian fluid/Bulk modulus", 2.7e7);
+    set_parameter(*prm,
+                  "Output/Directory",
+                  "output_geotube_undamped_" + coupling);
+    set_parameter(*prm, "Output/Quiet", "true");
     return prm;
   }
 
@@ -148,9 +135,7 @@ TEST(GeotubeUndamped, NoSlipCreatesNoEnergy)
 TEST(GeotubeUndamped, MassScalingWithoutDampingIsRefused)
 {
   auto prm = undamped_geotube(0.16, 0.1, "slip");
-  prm->enter_subsection("Damping");
-  prm->set("Mass scaling", true);
-  prm->leave_subsection();
+  set_parameter(*prm, "Damping/Mass scaling", "true");
   EXPECT_THROW(Simulator<2> sim(*prm), ExceptionBase);
 }
 
