@@ -81,13 +81,16 @@ namespace fsgmpm
 
     template <int dim>
     void
-    field_contact(const BackgroundGrid<dim>   &grid,
-                  const NodalConstraints<dim> &constraints,
-                  const double                 friction,
-                  const double                 volume_fraction,
-                  const double                 dt,
-                  const bool                   update_acceleration,
-                  NodalFields<dim>            &nodes)
+    field_contact(const BackgroundGrid<dim>       &grid,
+                  const NodalConstraints<dim>     &constraints,
+                  const double                     friction,
+                  const double                     volume_fraction,
+                  const double                     dt,
+                  const bool                       update_acceleration,
+                  NodalFields<dim>                &nodes,
+                  const Tensor<1, dim>            &gravity,
+                  CompensatedSum                  *unbalanced_norm_sq,
+                  const std::vector<std::uint8_t> *counted_nodes)
     {
       if (grid.n_velocity_fields() == 1)
         return;
@@ -157,6 +160,19 @@ namespace fsgmpm
               nodes.acceleration[i] += (v0 - old0) / dt;
               nodes.acceleration[j] += (v1 - old1) / dt;
             }
+          if (unbalanced_norm_sq != nullptr)
+            for (const auto &[k, dv_k] :
+                 {std::make_pair(i, v0 - old0), std::make_pair(j, v1 - old1)})
+              if (counted_nodes == nullptr || (*counted_nodes)[k] != 0)
+                {
+                  Tensor<1, dim> before
+                    = nodes.mass[k] * gravity - nodes.internal_force[k];
+                  Tensor<1, dim> after = before + (nodes.mass[k] / dt) * dv_k;
+                  constraints.project_out(k, before);
+                  constraints.project_out(k, after);
+                  unbalanced_norm_sq->add(after.norm_square()
+                                          - before.norm_square());
+                }
         }
     }
 
@@ -177,7 +193,10 @@ namespace fsgmpm
                      const double,
                      const double,
                      const bool,
-                     NodalFields<2> &);
+                     NodalFields<2> &,
+                     const Tensor<1, 2> &,
+                     CompensatedSum *,
+                     const std::vector<std::uint8_t> *);
     template void
     field_contact<3>(const BackgroundGrid<3> &,
                      const NodalConstraints<3> &,
@@ -185,6 +204,9 @@ namespace fsgmpm
                      const double,
                      const double,
                      const bool,
-                     NodalFields<3> &);
+                     NodalFields<3> &,
+                     const Tensor<1, 3> &,
+                     CompensatedSum *,
+                     const std::vector<std::uint8_t> *);
   } // namespace Stages
 } // namespace fsgmpm

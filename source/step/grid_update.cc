@@ -15,7 +15,9 @@ namespace fsgmpm
                 const double                     alpha,
                 const double                     dt,
                 NodalFields<dim>                &nodes,
-                const std::vector<std::uint8_t> *counted_nodes)
+                const std::vector<std::uint8_t> *counted_nodes,
+                const BackgroundGrid<dim>       *grid,
+                const double                     contact_volume_fraction)
     {
       GridUpdateResult r;
       // The damping work is booked at every node as dt F_damping . v_old:
@@ -36,6 +38,11 @@ namespace fsgmpm
       const bool remember_contact = !nodes.wall_contact.empty();
       // Mass scaling's fictitious inertia (sized only when it is used).
       const bool scaled = !nodes.added_mass.empty();
+      // Two fields meeting: the damping reads both fields' force.
+      const bool two_fields = alpha > 0 && grid != nullptr
+                              && grid->n_velocity_fields() == 2
+                              && nodes.contact_volume.size() > 0;
+      const unsigned int n_base = grid != nullptr ? grid->n_base_nodes() : 0;
       // Nodes with (almost) no mass carry no information; the remap of
       // Eq. (20) gives them a velocity consistent with their particles.
       const auto sums = CellLoops::compensated_sums<4>(
@@ -52,14 +59,27 @@ namespace fsgmpm
           const Tensor<1, dim> v_old = nodes.momentum[i] / m;
 
           const Tensor<1, dim> unbalanced = external - nodes.internal_force[i];
+          Tensor<1, dim>       damped     = unbalanced;
+          if (two_fields)
+            {
+              const unsigned int b     = i % n_base;
+              const unsigned int other = (i < n_base) ? i + n_base : b;
+              const double       m_o   = nodes.mass[other];
+              if (nodes.active_stamp[other] == nodes.stamp && m_o > 0
+                  && nodes.contact_volume[b]
+                       >= contact_volume_fraction * grid->node_volume[b])
+                damped = (m / (m + m_o))
+                         * (unbalanced + m_o * gravity
+                            - nodes.internal_force[other]);
+            }
           // Local non-viscous damping: opposes the motion with a fraction of
           // the unbalanced force, component by component.
           Tensor<1, dim> damping;
           if (alpha > 0)
             for (unsigned int d = 0; d < dim; ++d)
               if (v_old[d] != 0)
-                damping[d] = -alpha * std::abs(unbalanced[d])
-                             * (v_old[d] > 0 ? 1. : -1.);
+                damping[d]
+                  = -alpha * std::abs(damped[d]) * (v_old[d] > 0 ? 1. : -1.);
 
           // Mass scaling: the fictitious inertia is directional.
           Tensor<1, dim> v_new = v_old;
@@ -102,13 +122,17 @@ namespace fsgmpm
                    const double,
                    const double,
                    NodalFields<2> &,
-                   const std::vector<std::uint8_t> *);
+                   const std::vector<std::uint8_t> *,
+                   const BackgroundGrid<2> *,
+                   const double);
     template GridUpdateResult
     grid_update<3>(const NodalConstraints<3> &,
                    const Tensor<1, 3> &,
                    const double,
                    const double,
                    NodalFields<3> &,
-                   const std::vector<std::uint8_t> *);
+                   const std::vector<std::uint8_t> *,
+                   const BackgroundGrid<3> *,
+                   const double);
   } // namespace Stages
 } // namespace fsgmpm

@@ -224,23 +224,29 @@ namespace fsgmpm
     constraints.set_time(new_time);
     {
       TimerOutput::Scope scope(timer, "grid_update");
-      result.grid = Stages::grid_update(constraints,
-                                        gravity,
-                                        settings.local_damping,
-                                        dt,
-                                        nodes,
-                                        partition ? &partition->counted_nodes()
-                                                  : nullptr);
+      result.grid
+        = Stages::grid_update(constraints,
+                              gravity,
+                              settings.local_damping,
+                              dt,
+                              nodes,
+                              partition ? &partition->counted_nodes() : nullptr,
+                              &grid,
+                              settings.contact_volume_fraction);
       // The contact's dissipation is not booked as damping work: the nodal
       // kinetic energy it removes is not the points' (FLIP), and Eq. (30)'s
-      // guard only objects to energy gained.
+      // guard only objects to energy gained. Its reaction joins Eq. (30)'s
+      // unbalanced force.
       Stages::field_contact(grid,
                             constraints,
                             settings.contact_friction,
                             settings.contact_volume_fraction,
                             dt,
                             true,
-                            nodes);
+                            nodes,
+                            gravity,
+                            &result.grid.unbalanced_norm_sq,
+                            partition ? &partition->counted_nodes() : nullptr);
       if (partition != nullptr)
         {
           partition->update_ghost_nodes(nodes.velocity,

@@ -103,7 +103,14 @@ namespace fsgmpm
     /// With @p counted_nodes (MPI), the result sums only the nodes marked
     /// 1 there, so that the sums over all processes count each node once.
     /// The damping work is booked at every node as dt F_damp . v^n (a loss
-    /// at each node).
+    /// at each node). With two velocity fields (@p grid given), where the
+    /// fields meet (both have mass, and the points fill
+    /// @p contact_volume_fraction of the node's volume, as field_contact()
+    /// asks), the damping reads the node's mass share of both fields'
+    /// unbalanced force, in which the contact reaction cancels: each
+    /// field's own is not zero at rest there (the weight the other body
+    /// carries), and damping by it kept two bodies resting on each other
+    /// chattering.
     template <int dim>
     GridUpdateResult
     grid_update(const NodalConstraints<dim>     &constraints,
@@ -111,7 +118,9 @@ namespace fsgmpm
                 const double                     damping_alpha,
                 const double                     dt,
                 NodalFields<dim>                &nodes,
-                const std::vector<std::uint8_t> *counted_nodes = nullptr);
+                const std::vector<std::uint8_t> *counted_nodes = nullptr,
+                const BackgroundGrid<dim>       *grid          = nullptr,
+                const double                     contact_volume_fraction = 0);
 
     /// Multi-field contact, part 1 (once per step, after p2g and
     /// MembraneCoupling::p2g): at every node of field 0 the contact normal,
@@ -132,16 +141,24 @@ namespace fsgmpm
     /// velocity is reduced by Coulomb friction @p friction (stick if that
     /// stops it); separating fields are left alone. Momentum is conserved
     /// (the walls act again after). With @p update_acceleration the nodal
-    /// accelerations follow the velocity change (FLIP's Eq. 19).
+    /// accelerations follow the velocity change (FLIP's Eq. 19), and if
+    /// @p unbalanced_norm_sq is given (grid_update()'s sum for Eq. 30), the
+    /// contact reaction m dv/dt joins each field's unbalanced force
+    /// m g - f_int there (the free components; on the nodes of
+    /// @p counted_nodes if given): two bodies resting on each other are in
+    /// equilibrium only with it.
     template <int dim>
     void
-    field_contact(const BackgroundGrid<dim>   &grid,
-                  const NodalConstraints<dim> &constraints,
-                  const double                 friction,
-                  const double                 volume_fraction,
-                  const double                 dt,
-                  const bool                   update_acceleration,
-                  NodalFields<dim>            &nodes);
+    field_contact(const BackgroundGrid<dim>       &grid,
+                  const NodalConstraints<dim>     &constraints,
+                  const double                     friction,
+                  const double                     volume_fraction,
+                  const double                     dt,
+                  const bool                       update_acceleration,
+                  NodalFields<dim>                &nodes,
+                  const Tensor<1, dim>            &gravity = Tensor<1, dim>(),
+                  CompensatedSum                  *unbalanced_norm_sq = nullptr,
+                  const std::vector<std::uint8_t> *counted_nodes = nullptr);
 
     /// XPIC(m)'s scratch (xpic_correction()): nodal vectors sized to the
     /// grid's nodes when first used.
