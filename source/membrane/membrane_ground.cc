@@ -1,6 +1,7 @@
 #include <fsgmpm/membrane/membrane.h>
 #include <fsgmpm/membrane/membrane_ground.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fsgmpm
@@ -24,6 +25,16 @@ namespace fsgmpm
 
 
   template <int dim>
+  double
+  MembraneGround<dim>::depth(const Membrane<dim> &membrane,
+                             const unsigned int   a) const
+  {
+    return std::max(level - membrane.position[a][1], 0.);
+  }
+
+
+
+  template <int dim>
   void
   MembraneGround<dim>::add_forces(const Membrane<dim>         &membrane,
                                   std::vector<Tensor<1, dim>> &force) const
@@ -31,9 +42,7 @@ namespace fsgmpm
     if (!active())
       return;
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
-      if (membrane.position[a][1] < level)
-        force[a][1]
-          += node_stiffness(membrane, a) * (level - membrane.position[a][1]);
+      force[a][1] += node_stiffness(membrane, a) * depth(membrane, a);
   }
 
 
@@ -45,9 +54,8 @@ namespace fsgmpm
     double w = 0;
     if (active())
       for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
-        if (membrane.position[a][1] < level)
-          w += 0.5 * node_stiffness(membrane, a)
-               * std::pow(level - membrane.position[a][1], 2);
+        w += 0.5 * node_stiffness(membrane, a)
+             * std::pow(depth(membrane, a), 2);
     return w;
   }
 

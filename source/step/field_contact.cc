@@ -106,19 +106,12 @@ namespace fsgmpm
           const std::uint8_t state = nodes.field_contact_state[i];
           if (update_acceleration)
             nodes.field_contact_state[i] = 0;
-          const unsigned int j  = i + n_base;
-          const double       m0 = nodes.mass[i], m1 = nodes.mass[j];
-          if (m0 <= 0 || m1 <= 0)
+          if (!fields_meet(grid, nodes, i, volume_fraction))
             continue;
-          const double norm = nodes.contact_normal[i].norm();
-          if (norm == 0)
-            continue;
-          // Contact only where the two materials together fill the node: a
-          // node that both fields merely reach (a gap of up to a cell) would
-          // stop the bodies early.
-          if (nodes.contact_volume[i] < volume_fraction * grid.node_volume[i])
-            continue;
-          const Tensor<1, dim> n    = nodes.contact_normal[i] / norm;
+          const unsigned int   j  = i + n_base;
+          const double         m0 = nodes.mass[i], m1 = nodes.mass[j];
+          const Tensor<1, dim> n
+            = nodes.contact_normal[i] / nodes.contact_normal[i].norm();
           Tensor<1, dim>      &v0   = nodes.velocity[i];
           Tensor<1, dim>      &v1   = nodes.velocity[j];
           const Tensor<1, dim> v_cm = (m0 * v0 + m1 * v1) / (m0 + m1);

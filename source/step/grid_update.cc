@@ -60,17 +60,14 @@ namespace fsgmpm
 
           const Tensor<1, dim> unbalanced = external - nodes.internal_force[i];
           Tensor<1, dim>       damped     = unbalanced;
-          if (two_fields)
+          if (two_fields
+              && fields_meet(*grid, nodes, i % n_base, contact_volume_fraction))
             {
-              const unsigned int b     = i % n_base;
-              const unsigned int other = (i < n_base) ? i + n_base : b;
+              const unsigned int other = (i < n_base) ? i + n_base : i - n_base;
               const double       m_o   = nodes.mass[other];
-              if (nodes.active_stamp[other] == nodes.stamp && m_o > 0
-                  && nodes.contact_volume[b]
-                       >= contact_volume_fraction * grid->node_volume[b])
-                damped = (m / (m + m_o))
-                         * (unbalanced + m_o * gravity
-                            - nodes.internal_force[other]);
+              damped
+                = (m / (m + m_o))
+                  * (unbalanced + m_o * gravity - nodes.internal_force[other]);
             }
           // Local non-viscous damping: opposes the motion with a fraction of
           // the unbalanced force, component by component.

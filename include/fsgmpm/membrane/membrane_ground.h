@@ -40,6 +40,10 @@ namespace fsgmpm
     double
     node_stiffness(const Membrane<dim> &membrane, const unsigned int a) const;
 
+    /// How far node a is below the ground (0 above it).
+    double
+    depth(const Membrane<dim> &membrane, const unsigned int a) const;
+
     /// Adds the penalty force k_a (level - y_a) along y to the nodes below
     /// the ground (no tangential force).
     void

@@ -133,6 +133,25 @@ namespace fsgmpm
                     const ParticleStore<dim>  &particles,
                     NodalFields<dim>          &nodes);
 
+    /// True where the two velocity fields meet at base node @p i: both
+    /// have mass, field 0 has an outward normal there, and the points of
+    /// both fill @p volume_fraction of the node's volume (a node that both
+    /// fields merely reach, a gap of up to a cell, would stop the bodies
+    /// early). field_contact() acts there, and grid_update()'s damping
+    /// reads both fields' force there.
+    template <int dim>
+    inline bool
+    fields_meet(const BackgroundGrid<dim> &grid,
+                const NodalFields<dim>    &nodes,
+                const unsigned int         i,
+                const double               volume_fraction)
+    {
+      return nodes.mass[i] > 0 && nodes.mass[i + grid.n_base_nodes()] > 0
+             && nodes.contact_normal[i].norm_square() > 0
+             && nodes.contact_volume[i]
+                  >= volume_fraction * grid.node_volume[i];
+    }
+
     /// Multi-field contact, part 2 (after grid_update and after remap;
     /// Bardenhagen et al. 2000, 2001): at a node where both fields have
     /// mass, the points fill at least @p volume_fraction of the node's
