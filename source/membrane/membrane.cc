@@ -536,11 +536,91 @@ namespace fsgmpm
 
 
   template <int dim>
+  std::vector<typename Membrane<dim>::ElementStiffness>
+  Membrane<dim>::element_stiffness() const
+  {
+    const double EA   = properties.axial_stiffness;
+    const bool   slip = tangential_slip && MembraneSlip::applies(*this);
+    // Degree 2: the elements are the cells' halves (quarters in 3D); the
+    // P2 stiffness is at most 4/3 of that of its linear sub-elements (the
+    // largest generalised eigenvalue, for the cable and for the Laplacian
+    // on a triangle).
+    const double degree_factor = properties.element_degree == 2 ? 4. / 3. : 1.;
+    const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
+    std::vector<ElementStiffness> result;
+    result.reserve(elements.size() * ((dim == 3 && slip) ? 3 : 1));
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        const auto  &el = elements[e];
+        const double T  = std::max(tension[e], 0.);
+        if (dim == 3 && !slip)
+          {
+            // Constant-strain triangle: g_i = n x (x_{i+2} - x_{i+1}) / 2A
+            // in its plane; the plane-stress modulus EA/(1 - nu^2) [(1 - nu)
+            // eps + nu tr(eps) I] has the eigenvalues EA/(1 - nu) and
+            // EA/(1 + nu).
+            const Tensor<1, dim> n
+              = cross_product_3d(position[el[1]] - position[el[0]],
+                                 position[el[2]] - position[el[0]]);
+            const double two_area = n.norm();
+            if (!(two_area > 0))
+              continue;
+            const Tensor<1, dim> unit_n = n / two_area;
+            ElementStiffness     k;
+            k.nodes = el;
+            for (unsigned int i = 0; i < dim; ++i)
+              k.gradient[i] = cross_product_3d(unit_n,
+                                               position[el[(i + 2) % dim]]
+                                                 - position[el[(i + 1) % dim]])
+                              / two_area;
+            k.size    = degree_factor * two_area / 2;
+            k.modulus = EA / (1 - std::abs(properties.poisson_ratio))
+                          * (I - symmetrize(outer_product(unit_n, unit_n)))
+                        + T * I;
+            result.push_back(k);
+          }
+        else
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const unsigned int   j = (i + 1) % dim;
+              const Tensor<1, dim> d = position[el[j]] - position[el[i]];
+              const double         l = d.norm();
+              if (!(l > 0))
+                continue;
+              const SymmetricTensor<2, dim> tt
+                = symmetrize(outer_product(d / l, d / l));
+              // Slip in 3D keeps the axial stiffness along z, which the
+              // rings do not spread (the roller faces hold z anyway).
+              SymmetricTensor<2, dim> axial = tt;
+              if (slip)
+                {
+                  axial = SymmetricTensor<2, dim>();
+                  if (dim == 3)
+                    axial[dim - 1][dim - 1] = tt[dim - 1][dim - 1];
+                }
+              ElementStiffness k;
+              k.nodes       = el;
+              k.nodes[0]    = el[i];
+              k.nodes[1]    = el[j];
+              k.gradient[0] = -d / (l * l);
+              k.gradient[1] = d / (l * l);
+              k.size        = degree_factor * l;
+              k.modulus     = EA * axial + T * (I - tt);
+              result.push_back(k);
+              if (dim == 2)
+                break;
+            }
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
   std::vector<SymmetricTensor<2, dim>>
-  Membrane<dim>::nodal_stiffness() const
+  Membrane<dim>::node_stiffness() const
   {
     std::vector<SymmetricTensor<2, dim>> k(n_nodes());
-    const double                         EA = properties.axial_stiffness;
     // With the frictionless slip, MembraneSlip::equalize_stretch() spreads
     // every local stretch over the whole loop after each position update, so
     // the grid feels the cables' axial stiffness only through the loop's length
@@ -550,86 +630,13 @@ namespace fsgmpm
     // the mass scaling by EA/l instead would give the grid nodes next to
     // the membrane ~100x the fluid's inertia along it and slow the
     // relaxation of the shape (doc/membrane_validation.md).
-    const bool          slip = tangential_slip && MembraneSlip::applies(*this);
-    std::vector<double> loop_stiffness;
-    if (slip)
-      loop_stiffness = MembraneSlip::loop_axial_stiffness(*this);
-    // Degree 2: the elements are the cells' halves (quarters in 3D), whose
-    // straight-element bounds below the quadratic cell exceeds; the row
-    // sums of the P2 stiffness are 4/3 of those of its linear sub-elements
-    // (exactly, for the cable and for the Laplacian on any triangle).
-    const double degree_factor = properties.element_degree == 2 ? 4. / 3. : 1.;
-    for (unsigned int e = 0; e < elements.size(); ++e)
-      if (dim == 3 && !slip)
-        {
-          // A constant-strain triangle's stiffness block between nodes i
-          // and j is A g_i . C . g_j in the triangle's plane (g = grad N,
-          // |g_i| = l_i / 2A with l_i the edge opposite i), plus the
-          // geometric part sigma A (g_i . g_j) I: the row sums bound the
-          // node's share by 3/4 (1 + nu) EA A |g_i| sum_j |g_j| in the plane
-          // (|B_i|^2 <= 3/2 |g_i|^2, |C| = EA/(1 - nu); with c0 of the
-          // coupling this keeps a margin) and the tension's part in every
-          // direction. (Edges' EA/l, the 2D cable's per-metre stiffness,
-          // would treat each edge as a 1 m wide strip: ~60x too stiff at
-          // 1 cm elements, doc/geocontainer_validation.md, section 8.)
-          const auto          &el = elements[e];
-          const Tensor<1, dim> n
-            = cross_product_3d(position[el[1]] - position[el[0]],
-                               position[el[2]] - position[el[0]]);
-          const double two_area = n.norm();
-          if (!(two_area > 0))
-            continue;
-          std::array<double, 3> g;
-          double                g_sum = 0;
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              g[i]
-                = position[el[(i + 1) % 3]].distance(position[el[(i + 2) % 3]])
-                  / two_area;
-              g_sum += g[i];
-            }
-          const SymmetricTensor<2, dim> in_plane
-            = unit_symmetric_tensor<dim>()
-              - symmetrize(outer_product(n / two_area, n / two_area));
-          const double area = two_area / 2;
-          for (unsigned int i = 0; i < 3; ++i)
-            k[el[i]]
-              += (degree_factor * area * g[i] * g_sum)
-                 * (0.75 * (1 + properties.poisson_ratio) * EA * in_plane
-                    + std::max(tension[e], 0.) * unit_symmetric_tensor<dim>());
-        }
-      else
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            const auto                   &el = elements[e];
-            const unsigned int            j  = (i + 1) % dim;
-            const Tensor<1, dim>          d = position[el[j]] - position[el[i]];
-            const double                  l = d.norm();
-            const SymmetricTensor<2, dim> tt
-              = symmetrize(outer_product(d / l, d / l));
-            // An edge shared by two triangles counts twice: a safe bound.
-            // Slip in 3D keeps the axial stiffness along z, which the rings
-            // do not spread (the roller faces hold z anyway).
-            SymmetricTensor<2, dim> axial = tt;
-            if (slip)
-              {
-                axial = SymmetricTensor<2, dim>();
-                if (dim == 3)
-                  axial[dim - 1][dim - 1] = tt[dim - 1][dim - 1];
-              }
-            const SymmetricTensor<2, dim> k_edge
-              = degree_factor
-                * ((EA / l) * axial
-                   + (std::max(tension[e], 0.) / l)
-                       * (unit_symmetric_tensor<dim>() - tt));
-            k[el[i]] += k_edge;
-            k[el[j]] += k_edge;
-            if (dim == 2)
-              break;
-          }
-    if (slip)
-      for (unsigned int a = 0; a < n_nodes(); ++a)
-        k[a] += loop_stiffness[a] * unit_symmetric_tensor<dim>();
+    if (tangential_slip && MembraneSlip::applies(*this))
+      {
+        const std::vector<double> loop
+          = MembraneSlip::loop_axial_stiffness(*this);
+        for (unsigned int a = 0; a < n_nodes(); ++a)
+          k[a] += loop[a] * unit_symmetric_tensor<dim>();
+      }
     ground.add_stiffness(*this, k);
     return k;
   }

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.templates.h>
+
 #include <fsgmpm/membrane/membrane_slip.h>
 #include <fsgmpm/particles/point_locator.h>
 #include <fsgmpm/step/membrane_coupling.h>
@@ -71,22 +73,6 @@ namespace fsgmpm
   {
     if (dt_floor > 0)
       nodes.use(nodes.added_mass);
-    // Block Gershgorin bound on the membrane stiffness projected to the
-    // grid: element blocks k [A -A; -A A] <= 2 k diag(A, A) and convex
-    // transfer weights give K <= diag_i(D_i) with the directional
-    // D_i = c0 sum_a N_i(x_a) K_a (Membrane::nodal_stiffness; c0 = 2.5
-    // leaves a margin over the exact 2). The explicit update is stable if
-    // m_i I + added_i >= dt^2 (D_i + k_p,i I) / 4: dt <= 2 sqrt((m_i +
-    // added)/lambda) over the eigenpairs of D_i + k_p,i I, with the full
-    // nodal mass (fluid included) and the points' stiffness k_p,i (the
-    // same row-sum bound for V_p M_p grad N_i . grad N_j, M_p the P-wave
-    // modulus).
-    const double c0
-      = (dim == 2)
-          ? 2.5
-          : 2.5 / (1. - std::pow(membrane.properties.poisson_ratio, 2));
-    const std::vector<SymmetricTensor<2, dim>> k_node
-      = membrane.nodal_stiffness();
 
     // The touched grid nodes, sorted; index t of node i by bisection.
     touched.clear();
@@ -102,18 +88,146 @@ namespace fsgmpm
              - touched.begin();
     };
 
-    // D_i, summed over the membrane nodes in their order.
+    // MPI: the masses of the window's outer rim, exact (in a copy: the
+    // step's own values there stay as they are).
+    const std::vector<double> *mass = &nodes.mass;
+    if (partition != nullptr)
+      {
+        rim_mass = nodes.mass;
+        partition->update_ghost_nodes(rim_mass,
+                                      nodes.active_stamp,
+                                      nodes.stamp);
+        mass = &rim_mass;
+      }
+
+    // The elements as the grid sees them (Membrane::ElementStiffness): the
+    // grid gradients G_i = sum_a N_i(x_a) g_a over the nodes of the cells
+    // of the element's nodes, and with the nodal masses as the weights
+    // S_e = size sum_j |G_j|^2 / m_j, so that the element adds m_i S_e C_e
+    // at node i. The masses make the bound tight: a node that a membrane
+    // element barely reaches has a small G_i as well as a small mass, where
+    // the row sums (weights |G|) gave it the element's whole stiffness
+    // (the 2D geocontainer: 15 us there, against 0.1 ms by this bound and
+    // 0.16 ms exactly, doc/stability.md).
+    // With mass scaling the fictitious inertia follows this bound every
+    // step: weighted by the nodal masses it would follow their fluctuation
+    // as points cross cells, and a nodal inertia that changes from step to
+    // step creates energy (stability_extremes, 5 GN/m on 0.01 kg/m^2: 45%
+    // of the work, none with the row sums). Mass scaling takes the row
+    // sums, which depend on the membrane's geometry alone.
+    const bool             by_mass     = !(dt_floor > 0);
+    const auto             elements    = membrane.element_stiffness();
+    constexpr unsigned int max_support = dim * (dim + 1);
+    std::vector<std::array<unsigned int, max_support>> support(elements.size());
+    std::vector<std::array<Tensor<1, dim>, max_support>> gradient(
+      elements.size());
+    std::vector<unsigned int> n_support(elements.size(), 0);
+    element_weight.assign(elements.size(), -1.);
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        bool complete = true;
+        for (unsigned int q = 0; q < dim; ++q)
+          {
+            const unsigned int a = elements[e].nodes[q];
+            const unsigned int c = cell_here[a];
+            if (elements[e].gradient[q].norm_square() == 0)
+              continue;
+            if (c == BackgroundGrid<dim>::invalid)
+              {
+                complete = false;
+                continue;
+              }
+            for (unsigned int k = 0; k < dim + 1; ++k)
+              {
+                const unsigned int i = grid.cell_nodes[c][k];
+                unsigned int       s = 0;
+                while (s < n_support[e] && support[e][s] != i)
+                  ++s;
+                if (s == n_support[e])
+                  {
+                    support[e][s]  = i;
+                    gradient[e][s] = Tensor<1, dim>();
+                    ++n_support[e];
+                  }
+                gradient[e][s] += weights[a][k] * elements[e].gradient[q];
+              }
+          }
+        if (!complete)
+          continue;
+        double S = 0;
+        for (unsigned int s = 0; s < n_support[e]; ++s)
+          if ((*mass)[support[e][s]] > 0)
+            S += gradient[e][s].norm_square() / (*mass)[support[e][s]];
+        element_weight[e] = elements[e].size * S;
+      }
+    // MPI: an element whose nodes' cells are not all in this window gets
+    // its S_e from a process whose window holds them (the same value bit
+    // for bit: exact masses, the same order).
+    if (partition != nullptr && by_mass)
+      Utilities::MPI::max(make_array_view(std::as_const(element_weight)),
+                          partition->get_communicator(),
+                          make_array_view(element_weight));
+
+    // D_i: the elements, then the stiffness on single nodes (the ground,
+    // the slip loop), with a margin of 1.25 over the bound.
     touched_stiffness.assign(touched.size(), SymmetricTensor<2, dim>());
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      if (by_mass && element_weight[e] >= 0)
+        for (unsigned int s = 0; s < n_support[e]; ++s)
+          {
+            const unsigned int i = support[e][s];
+            if (gradient[e][s].norm_square() > 0 && (*mass)[i] > 0)
+              touched_stiffness[index_of(i)]
+                += ((*mass)[i] * element_weight[e]) * elements[e].modulus;
+          }
+      else
+        {
+          // Mass scaling, or a node outside the mesh (or an element longer
+          // than any process's window): the weights |g_a|, which need no
+          // grid masses; the element's own bound, each node's share
+          // projected to the grid as a single node's stiffness.
+          double g_sum = 0;
+          for (const auto &g : elements[e].gradient)
+            g_sum += g.norm();
+          for (unsigned int q = 0; q < dim; ++q)
+            {
+              const unsigned int a = elements[e].nodes[q];
+              if (cell_here[a] == BackgroundGrid<dim>::invalid)
+                continue;
+              for (unsigned int k = 0; k < dim + 1; ++k)
+                touched_stiffness[index_of(grid.cell_nodes[cell_here[a]][k])]
+                  += (std::max(weights[a][k], 0.) * elements[e].size
+                      * elements[e].gradient[q].norm() * g_sum)
+                     * elements[e].modulus;
+            }
+        }
+    // A stiffness k_a on one membrane node moves with u_a = sum_i N_i(x_a)
+    // u_i: the same bound with G_i = N_i(x_a), m_i k_a sum_j N_j(x_a)^2 /
+    // m_j at node i (the window holds the node's cell with exact masses);
+    // with mass scaling the row sums N_i(x_a) k_a (the weights sum to 1).
+    const std::vector<SymmetricTensor<2, dim>> k_node
+      = membrane.node_stiffness();
     for (unsigned int a = 0; a < membrane.n_nodes(); ++a)
       {
         const unsigned int c = cell_here[a];
-        if (c == BackgroundGrid<dim>::invalid)
+        if (c == BackgroundGrid<dim>::invalid || k_node[a].norm() == 0)
           continue;
-        const auto &lambda = weights[a];
+        double S = 0;
         for (unsigned int k = 0; k < dim + 1; ++k)
-          touched_stiffness[index_of(grid.cell_nodes[c][k])]
-            += (c0 * std::max(lambda[k], 0.)) * k_node[a];
+          if ((*mass)[grid.cell_nodes[c][k]] > 0)
+            S += weights[a][k] * weights[a][k] / (*mass)[grid.cell_nodes[c][k]];
+        for (unsigned int k = 0; k < dim + 1; ++k)
+          {
+            const unsigned int i = grid.cell_nodes[c][k];
+            if (!by_mass)
+              touched_stiffness[index_of(i)]
+                += std::max(weights[a][k], 0.) * k_node[a];
+            else if (weights[a][k] != 0 && (*mass)[i] > 0)
+              touched_stiffness[index_of(i)] += ((*mass)[i] * S) * k_node[a];
+          }
       }
+    for (auto &D : touched_stiffness)
+      D *= 1.25;
 
     // The points' row sums on the touched nodes.
     touched_points.assign(touched.size(), 0.);

@@ -6,8 +6,8 @@
 # planes, so the membrane is in plane strain: no in-plane shear (measured
 # 9e-9 of the hoop tension: the file's single precision) and an axial
 # tension nu / lambda_t^2 of the hoop one (nu = 0.3, lambda_t - 1 = 2e-6;
-# measured 0.299999), which the script must recover from the cells'
-# normals and the tensor. Then the 2D geotube (cables, 200 steps): DataOut
+# measured 0.299999; the major tension the hoop one within 1.7e-9), which
+# the script must recover from the cells' normals and the tensor. Then the 2D geotube (cables, 200 steps): DataOut
 # pads each cable's 2x2 tensor to 3x3, which must be T t t^T (t the cable's
 # direction from its end points in the file) with zero z row and column,
 # trace T, minor tension 0. About 5 s.
@@ -36,7 +36,7 @@ assert c["cells"] == 1656, "the slab's membrane has 1656 triangles"
 assert hoop > 10, "the membrane carries tension after 300 steps"
 assert abs(axial / hoop - 0.3) < 1e-5, "plane strain: axial = 0.3 hoop"
 assert c["|shear| max"] < 1e-7 * hoop, "no in-plane shear with the slip"
-assert abs(c["major mean"] / hoop - 1) < 1e-9, "major = hoop"
+assert abs(c["major mean"] / hoop - 1) < 1e-8, "major = hoop"
 print("ok: hoop, axial and shear parts of the slab's tension")
 PY
 "$exe" "$src/prm/geotube_A5.56.prm" \

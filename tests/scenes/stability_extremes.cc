@@ -345,16 +345,16 @@ TEST(StabilityExtremes, MembraneStiffnessAndMass)
           prm->leave_subsection();
           prm->leave_subsection();
           apply_courant_override(*prm);
-          // With mass scaling the fictitious nodal inertia's kinetic
-          // energy is not in kinetic_energy: the balance holds to 10%
-          // (measured 6.6% at 5 GN/m, 0.01 kg/m^2).
+          // Measured: no energy created in any of the eight runs (with
+          // mass scaling whose fictitious inertia followed the fluctuating
+          // nodal masses, 45% at 5 GN/m, 0.01 kg/m^2).
           Simulator<2> sim(*prm);
           const auto   out
             = run(sim,
                   "membrane EA " + std::to_string(EA) + " N/m, "
                     + std::to_string(rhoA) + " kg/m2, mass scaling "
                     + (scaling ? "on" : "off"),
-                  scaling ? 0.1 : kEnergyBound);
+                  kEnergyBound);
           EXPECT_EQ(out.termination, "max_steps") << out.diagnosis;
         }
 }

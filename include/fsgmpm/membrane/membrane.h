@@ -145,17 +145,44 @@ namespace fsgmpm
     double
     element_size(const unsigned int e) const;
 
-    /// Per node, the sum over its element edges (2D, and 3D with slip) of
-    /// the axial stiffness EA/l t(x)t along the edge and the geometric
-    /// stiffness T/l (I - t(x)t) across it (a taut cable resists sideways
-    /// motion with its tension), plus the ground penalty along y
-    /// (MembraneGround::add_stiffness()): the directional stiffness that the
-    /// nodal time-step bound and the mass scaling need. With slip, the axial
-    /// part is MembraneSlip::loop_axial_stiffness() in every direction. In 3D
-    /// without slip the elastic part is the constant-strain triangles' row
-    /// sums.
+    /**
+     * One element's elastic and geometric stiffness in the form the nodal
+     * time-step bound takes (MembraneCoupling::time_step()): with
+     * F = sum_a u_a (x) g_a over its nodes a (displacements u_a, shape
+     * gradients g_a along the element), its energy is at most
+     * size/2 (sum_a |g_a| |C^1/2 u_a|)^2, C = modulus. By Cauchy-Schwarz its
+     * stiffness matrix is then at most diag_a(w_a size sum_b (|g_b|^2 / w_b)
+     * C) for any positive weights w; and since moving the nodes with the
+     * grid, u_a = sum_i N_i(x_a) u_i, only replaces the g_a by
+     * G_i = sum_a N_i(x_a) g_a, the same holds for the stiffness the grid
+     * nodes i see, with G_i in place of g_a.
+     */
+    struct ElementStiffness
+    {
+      std::array<unsigned int, dim>   nodes;
+      std::array<Tensor<1, dim>, dim> gradient;
+      /// Length (cable) or area (triangle), times 4/3 at degree 2.
+      double size = 0;
+      /// Cables: EA t(x)t along the cable (none with slip, which the loop
+      /// stiffness bounds; 3D slip keeps its part along z) plus the
+      /// tension's T (I - t(x)t) across it. Triangles: the plane-stress
+      /// modulus's largest eigenvalue EA / (1 - |nu|) in the plane plus the
+      /// major tension in every direction.
+      SymmetricTensor<2, dim> modulus;
+    };
+
+    /// ElementStiffness of every element (2D, 3D without slip), or of every
+    /// triangle edge as a cable (3D with slip, an edge of two triangles
+    /// twice: a safe bound).
+    std::vector<ElementStiffness>
+    element_stiffness() const;
+
+    /// Per node, the stiffness acting on that node alone: the ground penalty
+    /// along y (MembraneGround::add_stiffness()) and, with slip, the loop's
+    /// axial stiffness MembraneSlip::loop_axial_stiffness() in every
+    /// direction.
     std::vector<SymmetricTensor<2, dim>>
-    nodal_stiffness() const;
+    node_stiffness() const;
 
     /// Total current length (2D) or area (3D).
     double
@@ -198,7 +225,7 @@ namespace fsgmpm
   public:
     /// Frictionless contact with the fill (2D, 3D rings; MembraneSlip):
     /// the coupling equalizes the stretch after every position update, and
-    /// nodal_stiffness() bounds the axial part by the loop's.
+    /// node_stiffness() bounds the axial part by the loop's.
     bool tangential_slip = false;
     /// Rigid frictionless ground acting on the nodes (off by default).
     MembraneGround<dim> ground;

@@ -20,7 +20,7 @@ namespace fsgmpm
    * themselves: a normal penalty force on the nodes below it, so that the
    * membrane can rest on the ground exactly instead of one cell early as
    * with a wall of the grid. Held by Membrane (Membrane::ground), whose
-   * compute_forces() and nodal_stiffness() add its force and stiffness.
+   * compute_forces() and node_stiffness() add its force and stiffness.
    * Off while the level is not finite.
    */
   template <int dim>
@@ -57,7 +57,7 @@ namespace fsgmpm
     energy(const Membrane<dim> &membrane) const;
 
     /// Adds node_stiffness() along y to every node, also far above the
-    /// ground (for the nodal time-step bound, Membrane::nodal_stiffness()).
+    /// ground (for the nodal time-step bound, Membrane::node_stiffness()).
     void
     add_stiffness(const Membrane<dim>                  &membrane,
                   std::vector<SymmetricTensor<2, dim>> &k) const;

@@ -64,7 +64,7 @@ namespace fsgmpm
     /// gives it, (EA/L) |theta_a| sum_b |theta_b| (theta: turning angle at
     /// the node, floored at the circle's pi (l_a + l_{a-1}) / L; 3D: times
     /// the node's share of the height). With slip, Membrane::
-    /// nodal_stiffness() uses it in place of the edges' EA/l in x-y, which
+    /// node_stiffness() gives it in place of the cables' EA in x-y, which
     /// equalize_stretch() spreads. Needs applies().
     template <int dim>
     std::vector<double>

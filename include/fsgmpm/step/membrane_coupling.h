@@ -72,9 +72,12 @@ namespace fsgmpm
 
     /// Nodal time-step bound with the membrane: min over the grid
     /// nodes the membrane touches and over directions of 2 sqrt(m_i / k),
-    /// k an eigenvalue of the block Gershgorin bound of the stiffness at
-    /// node i: the membrane's, projected to the node, plus the material
-    /// points' sum_c S_c |grad N_i^c| sum_j |grad N_j^c| (S_c from
+    /// k an eigenvalue of a bound D_i + k_p,i I of the stiffness at node i
+    /// (K <= diag(D_i + k_p,i I)): the membrane's as the grid sees it,
+    /// N^T K_m N, by Cauchy-Schwarz with the nodal masses as weights
+    /// (Membrane::ElementStiffness; a node the membrane barely reaches gets
+    /// little of it), plus the material points' row sums
+    /// sum_c S_c |grad N_i^c| sum_j |grad N_j^c| (S_c from
     /// Stages::stable_time_step()'s @p cell_stiffness over @p
     /// occupied_cells). The points' share matters at nearly empty nodes of
     /// partly covered cells (the geotube's lower corners): the membrane
@@ -177,6 +180,10 @@ namespace fsgmpm
     std::vector<unsigned int>            touched;
     std::vector<SymmetricTensor<2, dim>> touched_stiffness;
     std::vector<double>                  touched_points;
+    /// time_step()'s scratch: the nodal masses with the window's rim made
+    /// exact (MPI), and each element's size sum_j |G_j|^2 / m_j.
+    std::vector<double> rim_mass;
+    std::vector<double> element_weight;
   };
 } // namespace fsgmpm
 
