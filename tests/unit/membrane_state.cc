@@ -396,6 +396,42 @@ TEST(MembraneState, SlipOnExtrudedMembraneRings)
 
 
 
+// The exact explicit limit 2 / sqrt(lambda_max) of M^-1/2 K M^-1/2 (K dense,
+// N x N, row-major; M the mass of each degree of freedom), by power
+// iteration.
+double
+explicit_limit(const std::vector<double> &K,
+               const std::vector<double> &dof_mass,
+               const unsigned int         iterations)
+{
+  const unsigned int  N = dof_mass.size();
+  std::vector<double> v(N), y(N);
+  for (unsigned int k = 0; k < N; ++k)
+    v[k] = 1. + 0.1 * std::sin(7. * k);
+  double lambda = 0;
+  for (unsigned int it = 0; it < iterations; ++it)
+    {
+      double norm = 0, vy = 0, vv = 0;
+      for (unsigned int r = 0; r < N; ++r)
+        {
+          y[r] = 0;
+          for (unsigned int c = 0; c < N; ++c)
+            y[r] += K[r * N + c] * v[c] / std::sqrt(dof_mass[c]);
+          y[r] /= std::sqrt(dof_mass[r]);
+          norm += y[r] * y[r];
+          vy += v[r] * y[r];
+          vv += v[r] * v[r];
+        }
+      lambda = vy / vv;
+      norm   = std::sqrt(norm);
+      for (unsigned int k = 0; k < N; ++k)
+        v[k] = y[k] / norm;
+    }
+  return 2. / std::sqrt(lambda);
+}
+
+
+
 // The time-step bound of a membrane alone, without the coupling's margin:
 // at node a, m_a sum_e S_e C_e with S_e = size_e sum_b |g_b|^2 / m_b over
 // its elements (Membrane::ElementStiffness, weights the nodal masses), plus
@@ -486,34 +522,10 @@ TEST(MembraneState, TriangleStiffnessBoundsTheTimeStep)
       m.position = base;
       m.compute_forces();
 
-      // lambda_max of M^-1/2 K M^-1/2 by power iteration.
-      std::vector<double> v(N), w(N);
+      std::vector<double> dof_mass(N);
       for (unsigned int k = 0; k < N; ++k)
-        v[k] = 1. + 0.1 * std::sin(7. * k);
-      double lambda = 0;
-      for (unsigned int it = 0; it < 2000; ++it)
-        {
-          double norm = 0;
-          for (unsigned int r = 0; r < N; ++r)
-            {
-              w[r] = 0;
-              for (unsigned int c = 0; c < N; ++c)
-                w[r] += K[r * N + c] * v[c] / std::sqrt(m.mass[c / 3]);
-              w[r] /= std::sqrt(m.mass[r / 3]);
-              norm += w[r] * w[r];
-            }
-          norm      = std::sqrt(norm);
-          double vw = 0, vv = 0;
-          for (unsigned int k = 0; k < N; ++k)
-            {
-              vw += v[k] * w[k];
-              vv += v[k] * v[k];
-            }
-          lambda = vw / vv;
-          for (unsigned int k = 0; k < N; ++k)
-            v[k] = w[k] / norm;
-        }
-      const double dt_exact = 2. / std::sqrt(lambda);
+        dof_mass[k] = m.mass[k / 3];
+      const double dt_exact = explicit_limit(K, dof_mass, 2000);
 
       const double dt_bound = membrane_alone_bound(m);
       std::printf("measured 3D sheet, nu = %.1f: exact explicit limit %.3e s, "
@@ -1041,30 +1053,10 @@ TEST(MembraneState, ProjectedStiffnessBoundsTheTimeStep)
       m.position = base;
       m.compute_forces();
 
-      std::vector<double> v(N), y(N);
+      std::vector<double> dof_mass(N);
       for (unsigned int k = 0; k < N; ++k)
-        v[k] = 1. + 0.1 * std::sin(7. * k);
-      double lambda = 0;
-      for (unsigned int it = 0; it < 4000; ++it)
-        {
-          double norm = 0, vy = 0, vv = 0;
-          for (unsigned int r = 0; r < N; ++r)
-            {
-              y[r] = 0;
-              for (unsigned int c = 0; c < N; ++c)
-                y[r] += K[r * N + c] * v[c]
-                        / std::sqrt(nodes.mass[dof_node[c / 2]]);
-              y[r] /= std::sqrt(nodes.mass[dof_node[r / 2]]);
-              norm += y[r] * y[r];
-              vy += v[r] * y[r];
-              vv += v[r] * v[r];
-            }
-          lambda = vy / vv;
-          norm   = std::sqrt(norm);
-          for (unsigned int k = 0; k < N; ++k)
-            v[k] = y[k] / norm;
-        }
-      const double dt_exact = 2. / std::sqrt(lambda);
+        dof_mass[k] = nodes.mass[dof_node[k / 2]];
+      const double dt_exact = explicit_limit(K, dof_mass, 4000);
       std::printf("measured projected ring, ground %s: exact explicit limit "
                   "%.3e s, bound %.3e s (ratio %.3f)\n",
                   ground ? "on" : "off",
