@@ -109,10 +109,16 @@ namespace fsgmpm
                     phi_p
                       += lambda[k] * phi[grid.base_node(grid.cell_nodes[c][k])];
                   const bool free = (phi_p <= o.free_surface_threshold);
+                  // A point flagged the step before started this step at
+                  // zero pressure: no nodal force did work on its volume
+                  // change, so the energy its volume ratio now holds is the
+                  // explicit update's lag (K (tr d dt)^2 V / 2), created by
+                  // the update and removed by the reset, not a loss.
+                  const bool was_free       = particles.free_surface[p] != 0;
                   particles.free_surface[p] = free;
                   if (free)
                     {
-                      if (book
+                      if (book && !was_free
                           && (particles.ghost.empty()
                               || particles.ghost[p] == 0))
                         {
