@@ -447,8 +447,9 @@ TEST(StabilityExtremes, ImpactAt20MetresPerSecond)
 // stiffness: a light soft block resting on a heavy stiff one (completes),
 // and the reverse, a heavy stiff block (1 kPa of weight) on a light soft one
 // (E = 1 kPa), which it crushes flat; the linear elastic block cannot stand
-// that (its cells invert) and the guards stop it (measured: unstable at
-// step 5427), which is allowed, NaN is not.
+// that (its cells invert) and the guards must stop it with a diagnosis
+// (measured: unstable at step 8516); NaN or a run to the step limit with
+// inverted cells is a failure.
 TEST(StabilityExtremes, ContrastMillionToOne)
 {
   for (const bool heavy_on_top : {false, true})
@@ -498,6 +499,12 @@ end
       if (!heavy_on_top)
         {
           EXPECT_EQ(out.termination, "max_steps") << out.diagnosis;
+        }
+      else
+        {
+          // The guards, not a NaN or the step limit, end the crushing.
+          EXPECT_EQ(out.termination, "unstable");
+          EXPECT_LT(out.steps, 20000u);
         }
     }
 }
