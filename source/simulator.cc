@@ -1376,6 +1376,13 @@ namespace fsgmpm
                         ? stability_guard.energy_residual(monitors)
                             / stability_guard.energy_scale()
                         : 0.)},
+         // The guard's reading at its worst step: the largest energy
+         // created and its largest share of the energy scale (the run
+         // stops as unstable above Stability/Energy creation tolerance).
+         {"energy_created_largest",
+          json_number(stability_guard.largest_created())},
+         {"energy_created_largest_share",
+          json_number(stability_guard.largest_created_share())},
          {"bytes_per_particle", json_number(bytes)},
          {"peak_resident_bytes", json_number(peak_resident)},
          {"resident_bytes_per_particle",

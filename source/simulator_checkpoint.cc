@@ -119,6 +119,7 @@ namespace fsgmpm
       out.put("run/energies", relaxation.energy_state());
       out.put("run/counters", relaxation.counter_state());
       out.put("run/stability_guard", stability_guard.state());
+      out.put("run/stability_guard_largest", stability_guard.largest_state());
 
       // Process 0 writes monitors.csv (the others have no monitor file).
       out.put("output/monitor_bytes", root ? double(monitor_file->size()) : 0.);
@@ -278,6 +279,11 @@ namespace fsgmpm
     monitors.set_values(values);
     relaxation.set_state(in.doubles("run/energies"), in.uints("run/counters"));
     stability_guard.set_state(in.doubles("run/stability_guard"));
+    // (A checkpoint of an older version did not keep the largest creation:
+    // it is then counted from the restart.)
+    if (in.has("run/stability_guard_largest"))
+      stability_guard.set_largest_state(
+        in.doubles("run/stability_guard_largest"));
 
     resume_monitor_bytes = in.scalar("output/monitor_bytes");
     output_schedule.set_state(in.scalar("output/next_output_time"),

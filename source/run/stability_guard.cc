@@ -26,13 +26,17 @@ namespace fsgmpm
                         "measured.");
       prm.declare_entry(
         "Energy creation tolerance",
-        "0.5",
+        "0.05",
         Patterns::Double(0),
         "Stop as unstable if the kinetic plus strain energy exceeds the "
-        "initial energy plus the external work minus the damping work "
-        "(energy the step created) by more than this fraction of the "
-        "initial energy plus the largest external work so far; catches slow "
-        "growth that the growth window does not. 0 switches it off.");
+        "initial energy plus the external work minus the booked losses "
+        "(damping, plastic and viscous work, the transfers', the outflow) by "
+        "more than this fraction of the energy scale: the initial energy, "
+        "the largest external work so far and the energy the scene holds "
+        "(its points' potential energy above the mesh's lowest corner). "
+        "Catches slow growth that the growth window does not; summary.json "
+        "reports the run's largest reading "
+        "(energy_created_largest_share). 0 switches it off.");
     }
     prm.leave_subsection();
   }
@@ -64,8 +68,10 @@ namespace fsgmpm
     history.clear();
     history.push_back({{monitors.kinetic_energy + monitors.strain_energy,
                         monitors.external_work}});
-    initial_energy      = monitors.kinetic_energy + monitors.strain_energy;
-    external_work_scale = std::abs(monitors.external_work);
+    initial_energy         = monitors.kinetic_energy + monitors.strain_energy;
+    external_work_scale    = std::abs(monitors.external_work);
+    largest_created_energy = 0;
+    largest_created_ratio  = 0;
   }
 
 
@@ -89,9 +95,12 @@ namespace fsgmpm
     // More means the step created energy.
     external_work_scale
       = std::max(external_work_scale, std::abs(monitors.external_work));
-    const double stored  = monitors.kinetic_energy + monitors.strain_energy;
-    const double created = energy_created(monitors);
-    const double scale   = energy_scale();
+    const double stored    = monitors.kinetic_energy + monitors.strain_energy;
+    const double created   = energy_created(monitors);
+    const double scale     = energy_scale();
+    largest_created_energy = std::max(largest_created_energy, created);
+    if (scale > 0)
+      largest_created_ratio = std::max(largest_created_ratio, created / scale);
     if (settings.energy_creation_tolerance > 0 && scale > 0
         && created > settings.energy_creation_tolerance * scale)
       return "the kinetic plus strain energy (" + std::to_string(stored)
@@ -175,5 +184,17 @@ namespace fsgmpm
     history.clear();
     for (unsigned int k = 3; k < s.size(); k += 2)
       history.push_back({{s[k], s[k + 1]}});
+  }
+
+
+
+  void
+  StabilityGuard::set_largest_state(const std::vector<double> &s)
+  {
+    AssertThrow(s.size() == 2,
+                dealii::ExcMessage("The checkpoint's stability-guard state "
+                                   "is damaged."));
+    largest_created_energy = s[0];
+    largest_created_ratio  = s[1];
   }
 } // namespace fsgmpm

@@ -70,6 +70,10 @@ run_scene() {
   "${launch[@]}" "${args[@]}" --restart "$name.killed" >/dev/null
   check "$name: restart exits 0" test $? -eq 0
   check "$name: restarted monitors.csv identical" cmp -s "$name.full/monitors.csv" "$name.killed/monitors.csv"
+  # The stability guard's largest reading is restored with its history.
+  check "$name: restarted guard's largest reading identical" test \
+    "$(grep -o '"energy_created_largest_share": [^,]*' "$name.full/summary.json")" = \
+    "$(grep -o '"energy_created_largest_share": [^,]*' "$name.killed/summary.json")"
   if ls "$name.full"/particles_*.vtu >/dev/null 2>&1; then
     check "$name: restarted last VTU identical" same_last_step "$name.full" "$name.killed"
   else # Output/Format = hdf5

@@ -11,7 +11,8 @@
 # Asserts for each scene: exit status 0, termination end_time, max_steps (short mode), dr_converged
 # or at_rest in summary.json, finite values in every monitors.csv row
 # (no nan/inf), no lost points (lost_particles 0), no leftover temporary
-# file. Prints the wall time of each run.
+# file. Prints the wall time of each run and the stability guard's largest
+# reading (energy created over its energy scale).
 # Usage: shipped_scenes.sh <fsgmpm> <source dir> short|full [filter]
 set -u
 exe=$1
@@ -64,8 +65,9 @@ for prm in "$src"/prm/*.prm; do
   fi
   steps=$(sed -n 's/.*"steps": \([0-9]*\).*/\1/p' "$out/summary.json" 2>/dev/null)
   simt=$(sed -n 's/.*"simulated_time": \([0-9.e+-]*\).*/\1/p' "$out/summary.json" 2>/dev/null)
+  created=$(sed -n 's/.*"energy_created_largest_share": \([0-9.e+-]*\).*/\1/p' "$out/summary.json" 2>/dev/null)
   if [ -z "$why" ]; then
-    echo "ok   $name: ${steps} steps, ${simt} s simulated, ${wall} s wall"
+    echo "ok   $name: ${steps} steps, ${simt} s simulated, ${wall} s wall, largest energy created ${created} of the guard's scale"
     passed=$((passed + 1))
   else
     echo "FAIL $name ($wall s wall): $why"

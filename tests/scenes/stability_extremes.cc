@@ -111,7 +111,9 @@ namespace
     std::cout << "[ measured ] " << name << ": " << out.termination << " after "
               << out.steps << " steps (dt " << out.dt_min
               << " s), max created energy / energy put in = "
-              << out.created_ratio << std::endl;
+              << out.created_ratio << ", the guard's largest reading "
+              << sim.get_stability_guard().largest_created_share()
+              << " of its scale" << std::endl;
     EXPECT_TRUE(state_is_finite(sim)) << name << ": non-finite state";
     if (out.termination == "unstable")
       {
