@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace fsgmpm
 {
@@ -92,23 +93,127 @@ namespace fsgmpm
     double soil_outside_distance = 0, water_inside_depth = 0;
     if (membrane != nullptr && (dim == 2 || !membrane->rings.empty()))
       {
+        // The membrane's cross-section that a point is tested against: in
+        // 2D the loop; in 3D the exact section of the triangulated surface
+        // at the point's own z between the two rings around it (each ring a
+        // z level of nodes forming one closed loop), so that a point is not
+        // judged by a face of the slab where the membrane stands a
+        // millimetre elsewhere. Ring j + 1's nodes are matched to ring j's
+        // by their nearest (x, y).
+        std::vector<std::vector<unsigned int>> rings;
+        std::vector<double>                    levels;
+        if (dim == 3 && membrane->rings.size() >= 2)
+          {
+            std::vector<std::pair<double, unsigned int>> by_z;
+            for (unsigned int r = 0; r < membrane->rings.size(); ++r)
+              {
+                double z = 0;
+                for (const unsigned int a : membrane->rings[r])
+                  z += membrane->position[a][dim - 1];
+                by_z.emplace_back(z / membrane->rings[r].size(), r);
+              }
+            std::sort(by_z.begin(), by_z.end());
+            const auto xy_distance
+              = [&](const unsigned int a, const unsigned int b) {
+                  return std::hypot(membrane->position[a][0]
+                                      - membrane->position[b][0],
+                                    membrane->position[a][1]
+                                      - membrane->position[b][1]);
+                };
+            for (const auto &[z, r] : by_z)
+              {
+                std::vector<unsigned int> ring = membrane->rings[r];
+                if (!rings.empty())
+                  {
+                    if (ring.size() != rings.back().size())
+                      continue; // rings that do not correspond
+                    std::vector<unsigned int> matched(ring.size());
+                    for (unsigned int k = 0; k < ring.size(); ++k)
+                      matched[k] = *std::min_element(
+                        ring.begin(),
+                        ring.end(),
+                        [&](const unsigned int a, const unsigned int b) {
+                          return xy_distance(a, rings.back()[k])
+                                 < xy_distance(b, rings.back()[k]);
+                        });
+                    ring = matched;
+                  }
+                rings.push_back(ring);
+                levels.push_back(z);
+              }
+          }
+        else
+          rings.push_back(membrane->loop_nodes());
+        // The membrane's edges, to find each quad's diagonal.
+        std::set<std::pair<unsigned int, unsigned int>> edges;
+        if (rings.size() > 1)
+          for (const auto &element : membrane->elements)
+            for (unsigned int q = 0; q < element.size(); ++q)
+              for (unsigned int r = q + 1; r < element.size(); ++r)
+                edges.emplace(std::min(element[q], element[r]),
+                              std::max(element[q], element[r]));
+        const auto xy = [&](const unsigned int a) {
+          return Point<2>(membrane->position[a][0], membrane->position[a][1]);
+        };
+        // The section at height z: the points of the rings' edges and of
+        // each quad's diagonal at z.
+        const auto section_at = [&](const double z) {
+          std::vector<Point<2>> section;
+          if (rings.size() == 1 || z <= levels.front() || z >= levels.back())
+            {
+              for (const unsigned int a :
+                   rings.size() == 1 || z <= levels.front() ? rings.front()
+                                                            : rings.back())
+                section.push_back(xy(a));
+              return section;
+            }
+          const unsigned int j
+            = std::upper_bound(levels.begin(), levels.end(), z) - levels.begin()
+              - 1;
+          const double s  = (z - levels[j]) / (levels[j + 1] - levels[j]);
+          const auto  &r0 = rings[j], &r1 = rings[j + 1];
+          const auto   at = [&](const unsigned int a, const unsigned int b) {
+            return Point<2>((1 - s) * xy(a) + s * xy(b));
+          };
+          for (unsigned int k = 0; k < r0.size(); ++k)
+            {
+              const unsigned int l = (k + 1) % r0.size();
+              section.push_back(at(r0[k], r1[k]));
+              if (edges.count({std::min(r0[k], r1[l]), std::max(r0[k], r1[l])}))
+                section.push_back(at(r0[k], r1[l]));
+              else if (edges.count(
+                         {std::min(r0[l], r1[k]), std::max(r0[l], r1[k])}))
+                section.push_back(at(r0[l], r1[k]));
+            }
+          return section;
+        };
         std::vector<Point<2>> poly;
-        for (const auto &x : membrane->ordered_nodes())
-          poly.emplace_back(x[0], x[1]);
-        // A point off the polygon's bounding box (by more than round-off)
-        // is outside: its ray crosses the polygon an even number of times
-        // or not at all, so inside_polygon() would say so too. Most water
-        // points are, and the tests evaluate this at every step.
-        BoundingBox<2> box(poly);
+        // The rings' bounding box: a point off it (by more than
+        // round-off) is outside: its ray crosses the polygon an even number
+        // of times or not at all, so inside_polygon() would say so too.
+        // Most water points are, and the tests evaluate this at every step.
+        std::vector<Point<2>> all;
+        for (const auto &ring : rings)
+          for (const unsigned int a : ring)
+            all.push_back(xy(a));
+        BoundingBox<2> box(all);
         const double   diagonal = box.get_boundary_points().first.distance(
           box.get_boundary_points().second);
         box.extend(1e-9 * diagonal);
-        const PolygonInside inside_test(poly);
+        const std::vector<Point<2>> single = section_at(0);
+        const PolygonInside         single_test(single);
         for (unsigned int p = 0; p < particles.size(); ++p)
           {
             const Point<2> x(particles.position[p][0],
                              particles.position[p][1]);
-            const bool     inside = box.point_inside(x, 0.) && inside_test(x);
+            const bool     in_box = box.point_inside(x, 0.);
+            if (rings.size() == 1)
+              poly = single;
+            else if (in_box || particles.body_id[p] == container)
+              poly = section_at(particles.position[p][dim - 1]);
+            const bool inside = in_box
+                                && (rings.size() == 1 ? single_test(x)
+                                                      : PolygonInside(poly)(x));
             if (particles.body_id[p] == container && !inside)
               {
                 ++soil_outside;
