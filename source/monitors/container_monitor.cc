@@ -156,16 +156,18 @@ namespace fsgmpm
           return Point<2>(membrane->position[a][0], membrane->position[a][1]);
         };
         // The section at height z: the points of the rings' edges and of
-        // each quad's diagonal at z.
-        const auto section_at = [&](const double z) {
-          std::vector<Point<2>> section;
+        // each quad's diagonal at z (into @p section, a buffer reused from
+        // point to point).
+        const auto section_at = [&](const double           z,
+                                    std::vector<Point<2>> &section) {
+          section.clear();
           if (rings.size() == 1 || z <= levels.front() || z >= levels.back())
             {
               for (const unsigned int a :
                    rings.size() == 1 || z <= levels.front() ? rings.front()
                                                             : rings.back())
                 section.push_back(xy(a));
-              return section;
+              return;
             }
           const unsigned int j
             = std::upper_bound(levels.begin(), levels.end(), z) - levels.begin()
@@ -185,9 +187,7 @@ namespace fsgmpm
                          {std::min(r0[l], r1[k]), std::max(r0[l], r1[k])}))
                 section.push_back(at(r0[l], r1[k]));
             }
-          return section;
         };
-        std::vector<Point<2>> poly;
         // The rings' bounding box: a point off it (by more than
         // round-off) is outside: its ray crosses the polygon an even number
         // of times or not at all, so inside_polygon() would say so too.
@@ -200,31 +200,38 @@ namespace fsgmpm
         const double   diagonal = box.get_boundary_points().first.distance(
           box.get_boundary_points().second);
         box.extend(1e-9 * diagonal);
-        const std::vector<Point<2>> single = section_at(0);
-        const PolygonInside         single_test(single);
+        // One loop (2D): tested through its bands; in 3D each point's own
+        // section, once, by the plain even-odd rule (the same bits).
+        std::vector<Point<2>> single, section;
+        section_at(0, single);
+        const PolygonInside          single_test(single);
+        const std::vector<Point<2>> *poly = &single;
         for (unsigned int p = 0; p < particles.size(); ++p)
           {
             const Point<2> x(particles.position[p][0],
                              particles.position[p][1]);
             const bool     in_box = box.point_inside(x, 0.);
-            if (rings.size() == 1)
-              poly = single;
-            else if (in_box || particles.body_id[p] == container)
-              poly = section_at(particles.position[p][dim - 1]);
-            const bool inside = in_box
-                                && (rings.size() == 1 ? single_test(x)
-                                                      : PolygonInside(poly)(x));
+            if (rings.size() > 1
+                && (in_box || particles.body_id[p] == container))
+              {
+                section_at(particles.position[p][dim - 1], section);
+                poly = &section;
+              }
+            const bool inside
+              = in_box
+                && (rings.size() == 1 ? single_test(x)
+                                      : inside_polygon(section, x));
             if (particles.body_id[p] == container && !inside)
               {
                 ++soil_outside;
                 soil_outside_distance
-                  = std::max(soil_outside_distance, distance(poly, x));
+                  = std::max(soil_outside_distance, distance(*poly, x));
               }
             else if (particles.body_id[p] != container && inside)
               {
                 ++water_inside;
                 water_inside_depth
-                  = std::max(water_inside_depth, distance(poly, x));
+                  = std::max(water_inside_depth, distance(*poly, x));
               }
           }
       }
