@@ -1,11 +1,48 @@
 #include <fsgmpm/io/state_checkpoint.h>
 
 #include <algorithm>
+#include <string>
+#include <type_traits>
 
 namespace fsgmpm
 {
   namespace StateCheckpoint
   {
+    namespace
+    {
+      /// A per-point array as rows of the checkpoint, by its type.
+      template <typename T>
+      void
+      put_array(CheckpointWriter     &out,
+                const std::string    &name,
+                const std::vector<T> &v)
+      {
+        if constexpr (std::is_same_v<T,
+                                     double> || std::is_same_v<T, unsigned int>)
+          out.put_rows(name, v);
+        else if constexpr (std::is_integral_v<T>)
+          out.put_integer_rows(name, v);
+        else
+          out.put_tensor_rows(name, v);
+      }
+
+      template <typename T>
+      std::vector<T>
+      get_array(const CheckpointReader &in, const std::string &name)
+      {
+        if constexpr (std::is_same_v<T, double>)
+          return in.doubles(name);
+        else if constexpr (std::is_same_v<T, unsigned int>)
+          return in.uints(name);
+        else if constexpr (std::is_integral_v<T>)
+          return in.integers<T>(name);
+        else
+          return in.tensors<T>(name);
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     save(CheckpointWriter          &out,
@@ -13,29 +50,22 @@ namespace fsgmpm
          const BackgroundGrid<dim> &grid)
     {
       // One row per point; with MPI each process writes its own points.
-      out.put_tensor_rows("particles/position", p.position);
-      out.put_tensor_rows("particles/velocity", p.velocity);
       out.put("particles/has_affine_velocity", double(p.has_affine_velocity()));
-      out.put_tensor_rows("particles/affine_velocity", p.affine_velocity);
-      if (p.has_initial_position())
-        out.put_tensor_rows("particles/initial_position", p.initial_position);
-      if (p.has_plasticity())
-        {
-          out.put_rows("particles/plastic_strain", p.plastic_strain);
-          out.put_integer_rows("particles/yielding", p.yielding);
-        }
-      out.put_tensor_rows("particles/stress", p.stress);
-      out.put_rows("particles/mass", p.mass);
-      out.put_rows("particles/volume", p.volume);
-      out.put_rows("particles/reference_volume", p.reference_volume);
-      std::vector<unsigned int> cell(p.cell.size());
-      for (unsigned int q = 0; q < cell.size(); ++q)
-        cell[q] = grid.global_cell(p.cell[q]);
-      out.put_rows("particles/cell", cell);
-      out.put_integer_rows("particles/material_id", p.material_id);
-      out.put_integer_rows("particles/body_id", p.body_id);
-      out.put_integer_rows("particles/free_surface", p.free_surface);
-      out.put_rows("particles/id", p.id);
+      p.for_each_state_array([&](const char *name, const auto &v) {
+        const std::string key = std::string("particles/") + name;
+        using T               = typename std::decay_t<decltype(v)>::value_type;
+        if constexpr (std::is_same_v<T, unsigned int>)
+          if (&v == &p.cell)
+            {
+              // Cells by their number in the whole grid.
+              std::vector<unsigned int> cell(v.size());
+              for (unsigned int q = 0; q < cell.size(); ++q)
+                cell[q] = grid.global_cell(v[q]);
+              put_array(out, key, cell);
+              return;
+            }
+        put_array(out, key, v);
+      });
     }
 
 
@@ -46,70 +76,40 @@ namespace fsgmpm
          ParticleStore<dim>     &p,
          const unsigned int      n_cells)
     {
-      p.position = in.tensors<Point<dim>>("particles/position");
-      p.velocity = in.tensors<Tensor<1, dim>>("particles/velocity");
-      if (in.scalar("particles/has_affine_velocity") != 0)
+      // The optional arrays the checkpoint holds are switched on; those
+      // this run keeps and an older checkpoint lacks start from the
+      // restart (zero, or the displacement counted from there).
+      if (in.scalar("particles/has_affine_velocity") != 0
+          && !p.has_affine_velocity())
         p.enable_affine_velocity();
-      p.affine_velocity
-        = in.tensors<Tensor<2, dim>>("particles/affine_velocity");
-      if (in.has("particles/initial_position"))
-        {
-          if (!p.has_initial_position())
-            p.enable_initial_position();
-          p.initial_position
-            = in.tensors<Point<dim>>("particles/initial_position");
-        }
-      else if (p.has_initial_position())
-        // A checkpoint written without them: the displacement counts from
-        // the restart.
-        p.initial_position = p.position;
-      if (in.has("particles/plastic_strain"))
-        {
-          if (!p.has_plasticity())
-            p.enable_plasticity();
-          p.plastic_strain = in.doubles("particles/plastic_strain");
-          p.yielding       = in.integers<std::uint8_t>("particles/yielding");
-        }
-      else if (p.has_plasticity())
-        {
-          // A checkpoint written without them: from the restart.
-          p.plastic_strain.assign(p.position.size(), 0.);
-          p.yielding.assign(p.position.size(), 0);
-        }
-      p.stress = in.tensors<SymmetricTensor<2, 3>>("particles/stress");
-      p.mass   = in.doubles("particles/mass");
-      p.volume = in.doubles("particles/volume");
-      p.reference_volume = in.doubles("particles/reference_volume");
-      p.cell             = in.uints("particles/cell");
-      p.material_id      = in.integers<std::uint16_t>("particles/material_id");
-      p.body_id          = in.integers<std::uint16_t>("particles/body_id");
-      p.free_surface     = in.integers<std::uint8_t>("particles/free_surface");
-      p.id               = in.uints("particles/id");
+      if (in.has("particles/initial_position") && !p.has_initial_position())
+        p.enable_initial_position();
+      if (in.has("particles/plastic_strain") && !p.has_plasticity())
+        p.enable_plasticity();
+      // An array the checkpoint lacks stays empty: an optional one is
+      // filled in below, any other fails the length check.
+      p.for_each_state_array([&](const char *name, auto &v) {
+        using T               = typename std::decay_t<decltype(v)>::value_type;
+        const std::string key = std::string("particles/") + name;
+        v = in.has(key) ? get_array<T>(in, key) : std::vector<T>();
+      });
       const unsigned int n = p.position.size();
-      for (const std::size_t size : {p.velocity.size(),
-                                     p.stress.size(),
-                                     p.mass.size(),
-                                     p.volume.size(),
-                                     p.reference_volume.size(),
-                                     p.cell.size(),
-                                     p.material_id.size(),
-                                     p.body_id.size(),
-                                     p.free_surface.size(),
-                                     p.id.size()})
-        AssertThrow(size == n,
-                    ExcMessage("The checkpoint's point arrays differ in "
-                               "length: it is damaged."));
-      AssertThrow(p.plastic_strain.size() == (p.has_plasticity() ? n : 0)
-                    && p.yielding.size() == p.plastic_strain.size(),
-                  ExcMessage("The checkpoint's plastic strains do not match "
-                             "its points: it is damaged."));
-      AssertThrow(p.initial_position.size()
-                    == (p.has_initial_position() ? n : 0),
-                  ExcMessage("The checkpoint's initial positions do not "
-                             "match its points: it is damaged."));
-      AssertThrow(p.affine_velocity.size() == (p.has_affine_velocity() ? n : 0),
-                  ExcMessage("The checkpoint's affine velocities do not "
-                             "match its points: it is damaged."));
+      if (p.has_affine_velocity() && p.affine_velocity.empty())
+        p.affine_velocity.resize(n);
+      if (p.has_initial_position() && p.initial_position.empty())
+        p.initial_position = p.position;
+      if (p.has_plasticity() && p.plastic_strain.empty())
+        {
+          p.plastic_strain.assign(n, 0.);
+          p.yielding.assign(n, 0);
+        }
+      p.for_each_state_array([&](const char *name, const auto &v) {
+        AssertThrow(v.size() == n,
+                    ExcMessage(
+                      "The checkpoint's point array " + std::string(name)
+                      + " has " + std::to_string(v.size()) + " entries for "
+                      + std::to_string(n) + " points: it is damaged."));
+      });
       for (const unsigned int c : p.cell)
         AssertThrow(c < n_cells,
                     ExcMessage("The checkpoint names cell " + std::to_string(c)

@@ -15,19 +15,17 @@ namespace fsgmpm
   {
     namespace
     {
-      /// The whole state of one point, as it travels.
+      /// The bytes of one point's state as it travels: each state array's
+      /// entry in turn (ParticleStore::for_each_state_array()).
       template <int dim>
-      struct Record
+      std::size_t
+      record_size(const ParticleStore<dim> &particles)
       {
-        Point<dim>            position, initial_position;
-        Tensor<1, dim>        velocity;
-        Tensor<2, dim>        affine_velocity;
-        SymmetricTensor<2, 3> stress;
-        double                mass, volume, reference_volume, plastic_strain;
-        unsigned int          cell, id;
-        std::uint16_t         material_id, body_id;
-        std::uint8_t          free_surface, yielding;
-      };
+        std::size_t bytes = 0;
+        particles.for_each_state_array(
+          [&](const char *, const auto &v) { bytes += sizeof(v[0]); });
+        return bytes;
+      }
 
       template <int dim>
       void
@@ -36,34 +34,18 @@ namespace fsgmpm
            const unsigned int        global_cell,
            std::vector<char>        &buffer)
       {
-        Record<dim> r;
-        r.position = particles.position[p];
-        r.velocity = particles.velocity[p];
-        if (particles.has_affine_velocity())
-          r.affine_velocity = particles.affine_velocity[p];
-        if (particles.has_initial_position())
-          r.initial_position = particles.initial_position[p];
-        r.plastic_strain = 0;
-        r.yielding       = 0;
-        if (particles.has_plasticity())
-          {
-            r.plastic_strain = particles.plastic_strain[p];
-            r.yielding       = particles.yielding[p];
-          }
-        r.stress           = particles.stress[p];
-        r.mass             = particles.mass[p];
-        r.volume           = particles.volume[p];
-        r.reference_volume = particles.reference_volume[p];
-        // On the way, a cell goes by its number in the whole grid: the
-        // processes may hold windows of it, numbered each their own way.
-        r.cell              = global_cell;
-        r.id                = particles.id[p];
-        r.material_id       = particles.material_id[p];
-        r.body_id           = particles.body_id[p];
-        r.free_surface      = particles.free_surface[p];
-        const std::size_t n = buffer.size();
-        buffer.resize(n + sizeof(r));
-        std::memcpy(buffer.data() + n, &r, sizeof(r));
+        std::size_t n = buffer.size();
+        buffer.resize(n + record_size(particles));
+        particles.for_each_state_array([&](const char *, const auto &v) {
+          // On the way, a cell goes by its number in the whole grid: the
+          // processes may hold windows of it, numbered each their own way.
+          const void *value = (static_cast<const void *>(&v)
+                               == static_cast<const void *>(&particles.cell))
+                                ? static_cast<const void *>(&global_cell)
+                                : static_cast<const void *>(&v[p]);
+          std::memcpy(buffer.data() + n, value, sizeof(v[0]));
+          n += sizeof(v[0]);
+        });
       }
 
       /// Append the points of @p buffer; @p ghost marks them as copies.
@@ -74,37 +56,23 @@ namespace fsgmpm
              const std::uint8_t         ghost,
              ParticleStore<dim>        &particles)
       {
-        AssertThrow(buffer.size() % sizeof(Record<dim>) == 0,
-                    ExcInternalError());
-        for (std::size_t k = 0; k < buffer.size(); k += sizeof(Record<dim>))
+        const std::size_t size = record_size(particles);
+        AssertThrow(buffer.size() % size == 0, ExcInternalError());
+        for (std::size_t k = 0; k < buffer.size(); k += size)
           {
-            Record<dim> r;
-            std::memcpy(&r, buffer.data() + k, sizeof(r));
-            particles.position.push_back(r.position);
-            particles.velocity.push_back(r.velocity);
-            if (particles.has_affine_velocity())
-              particles.affine_velocity.push_back(r.affine_velocity);
-            if (particles.has_initial_position())
-              particles.initial_position.push_back(r.initial_position);
-            if (particles.has_plasticity())
-              {
-                particles.plastic_strain.push_back(r.plastic_strain);
-                particles.yielding.push_back(r.yielding);
-              }
-            particles.stress.push_back(r.stress);
-            particles.mass.push_back(r.mass);
-            particles.volume.push_back(r.volume);
-            particles.reference_volume.push_back(r.reference_volume);
-            const unsigned int cell = grid.local_cell(r.cell);
+            std::size_t offset = k;
+            particles.for_each_state_array([&](const char *, auto &v) {
+              v.emplace_back();
+              std::memcpy(&v.back(), buffer.data() + offset, sizeof(v[0]));
+              offset += sizeof(v[0]);
+            });
+            unsigned int      &cell        = particles.cell.back();
+            const unsigned int global_cell = cell;
+            cell                           = grid.local_cell(global_cell);
             AssertThrow(cell != BackgroundGrid<dim>::invalid,
                         ExcMessage("A point arrived in cell "
-                                   + std::to_string(r.cell)
+                                   + std::to_string(global_cell)
                                    + ", which this process does not hold."));
-            particles.cell.push_back(cell);
-            particles.id.push_back(r.id);
-            particles.material_id.push_back(r.material_id);
-            particles.body_id.push_back(r.body_id);
-            particles.free_surface.push_back(r.free_surface);
             if (!particles.ghost.empty())
               particles.ghost.push_back(ghost);
           }
@@ -254,27 +222,8 @@ namespace fsgmpm
         if (particles.cell_begin(c) < n_owned)
           owned_cells.push_back(c);
       particles.keep_cell_ranges(owned_cells);
-      auto cut = [n_owned](auto &v) { v.resize(n_owned); };
-      cut(particles.position);
-      cut(particles.velocity);
-      if (particles.has_affine_velocity())
-        cut(particles.affine_velocity);
-      if (particles.has_initial_position())
-        cut(particles.initial_position);
-      if (particles.has_plasticity())
-        {
-          cut(particles.plastic_strain);
-          cut(particles.yielding);
-        }
-      cut(particles.stress);
-      cut(particles.mass);
-      cut(particles.volume);
-      cut(particles.reference_volume);
-      cut(particles.cell);
-      cut(particles.material_id);
-      cut(particles.body_id);
-      cut(particles.free_surface);
-      cut(particles.id);
+      particles.for_each_state_array(
+        [n_owned](const char *, auto &v) { v.resize(n_owned); });
       particles.ghost.clear();
     }
 

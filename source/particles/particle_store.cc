@@ -51,28 +51,7 @@ namespace fsgmpm
   void
   ParticleStore<dim>::reserve(const unsigned int n)
   {
-    position.reserve(n);
-    cell.reserve(n);
-    mass.reserve(n);
-    volume.reserve(n);
-    reference_volume.reserve(n);
-    velocity.reserve(n);
-    stress.reserve(n);
-    material_id.reserve(n);
-    body_id.reserve(n);
-    free_surface.reserve(n);
-    id.reserve(n);
-    if (!ghost.empty())
-      ghost.reserve(n);
-    if (with_affine_velocity)
-      affine_velocity.reserve(n);
-    if (with_initial_position)
-      initial_position.reserve(n);
-    if (with_plasticity)
-      {
-        plastic_strain.reserve(n);
-        yielding.reserve(n);
-      }
+    for_each_array([n](const char *, auto &v) { v.reserve(n); });
   }
 
 
@@ -244,40 +223,13 @@ namespace fsgmpm
 
     // Each array along the same cycles, the arrays in parallel (one task
     // each; serial, the sort held back the second thread).
-    const std::function<void()> arrays[]
-      = {[this]() { permute(position); },
-         [this]() { permute(velocity); },
-         [this]() { permute(stress); },
-         [this]() { permute(mass); },
-         [this]() { permute(volume); },
-         [this]() { permute(reference_volume); },
-         [this]() { permute(cell); },
-         [this]() { permute(material_id); },
-         [this]() { permute(body_id); },
-         [this]() { permute(free_surface); },
-         [this]() { permute(id); },
-         [this]() {
-           if (!ghost.empty())
-             permute(ghost);
-         },
-         [this]() {
-           if (with_affine_velocity)
-             permute(affine_velocity);
-         },
-         [this]() {
-           if (with_initial_position)
-             permute(initial_position);
-         },
-         [this]() {
-           if (with_plasticity)
-             {
-               permute(plastic_strain);
-               permute(yielding);
-             }
-         }};
+    std::vector<std::function<void()>> arrays;
+    for_each_array([&](const char *, auto &v) {
+      arrays.emplace_back([this, &v]() { permute(v); });
+    });
     parallel::apply_to_subranges(
       0u,
-      static_cast<unsigned int>(std::size(arrays)),
+      static_cast<unsigned int>(arrays.size()),
       [&](const unsigned int b, const unsigned int e) {
         for (unsigned int k = b; k < e; ++k)
           arrays[k]();
@@ -303,28 +255,7 @@ namespace fsgmpm
         v[i] = v[keep[i]];
       v.resize(keep.size());
     };
-    shrink(position);
-    shrink(velocity);
-    shrink(stress);
-    shrink(mass);
-    shrink(volume);
-    shrink(reference_volume);
-    shrink(cell);
-    shrink(material_id);
-    shrink(body_id);
-    shrink(free_surface);
-    shrink(id);
-    if (!ghost.empty())
-      shrink(ghost);
-    if (with_affine_velocity)
-      shrink(affine_velocity);
-    if (with_initial_position)
-      shrink(initial_position);
-    if (with_plasticity)
-      {
-        shrink(plastic_strain);
-        shrink(yielding);
-      }
+    for_each_array([&](const char *, auto &v) { shrink(v); });
   }
 
 
@@ -417,24 +348,17 @@ namespace fsgmpm
   {
     if (size() == 0)
       return 0;
-    const double bytes
-      = (position.capacity() + initial_position.capacity()) * sizeof(Point<dim>)
-        + velocity.capacity() * sizeof(Tensor<1, dim>)
-        + affine_velocity.capacity() * sizeof(Tensor<2, dim>)
-        + stress.capacity() * sizeof(SymmetricTensor<2, 3>)
-        + (mass.capacity() + volume.capacity() + reference_volume.capacity()
-           + plastic_strain.capacity())
-            * sizeof(double)
-        + yielding.capacity() + cell.capacity() * sizeof(unsigned int)
-        + (material_id.capacity() + body_id.capacity()) * sizeof(std::uint16_t)
-        + free_surface.capacity() + ghost.capacity()
-        + id.capacity() * sizeof(unsigned int)
-        + (occupied_cells.capacity() + slot_of_cell.capacity()
-           + slot_begin.capacity() + slot_end.capacity()
-           + order_scratch.capacity() + slot_cursor.capacity()
-           + cycle_starts.capacity())
-            * sizeof(unsigned int)
-        + geometry_cache.capacity() * sizeof(CellGeometry<dim>);
+    double bytes = 0;
+    for_each_state_array([&](const char *, const auto &v) {
+      bytes += v.capacity() * sizeof(v[0]);
+    });
+    bytes += ghost.capacity()
+             + (occupied_cells.capacity() + slot_of_cell.capacity()
+                + slot_begin.capacity() + slot_end.capacity()
+                + order_scratch.capacity() + slot_cursor.capacity()
+                + cycle_starts.capacity())
+                 * sizeof(unsigned int)
+             + geometry_cache.capacity() * sizeof(CellGeometry<dim>);
     return bytes / size();
   }
 

@@ -251,7 +251,66 @@ namespace fsgmpm
     /// The id the next added point gets.
     unsigned int next_id = 0;
 
+    /**
+     * Calls f(name, array) for every per-point array that makes up the
+     * points' state, in a fixed order: the optional arrays only when they
+     * are switched on, the process-local `ghost` flags never. This is the
+     * one list of the arrays: sorting, reserving, removing, the MPI
+     * exchange, the checkpoints and the memory count all go through it, so
+     * a new per-point array is added here and in add() and nowhere else.
+     * @p name is the array's name in checkpoints.
+     */
+    template <typename Function>
+    void
+    for_each_state_array(const Function &f)
+    {
+      arrays_of(*this, f);
+    }
+
+    template <typename Function>
+    void
+    for_each_state_array(const Function &f) const
+    {
+      arrays_of(*this, f);
+    }
+
+    /// for_each_state_array() and, in MPI runs, the `ghost` flags.
+    template <typename Function>
+    void
+    for_each_array(const Function &f)
+    {
+      arrays_of(*this, f);
+      if (!ghost.empty())
+        f("ghost", ghost);
+    }
+
   private:
+    template <typename Self, typename Function>
+    static void
+    arrays_of(Self &self, const Function &f)
+    {
+      f("position", self.position);
+      f("velocity", self.velocity);
+      if (self.with_affine_velocity)
+        f("affine_velocity", self.affine_velocity);
+      if (self.with_initial_position)
+        f("initial_position", self.initial_position);
+      if (self.with_plasticity)
+        {
+          f("plastic_strain", self.plastic_strain);
+          f("yielding", self.yielding);
+        }
+      f("stress", self.stress);
+      f("mass", self.mass);
+      f("volume", self.volume);
+      f("reference_volume", self.reference_volume);
+      f("cell", self.cell);
+      f("material_id", self.material_id);
+      f("body_id", self.body_id);
+      f("free_surface", self.free_surface);
+      f("id", self.id);
+    }
+
     static constexpr unsigned int invalid_slot = static_cast<unsigned int>(-1);
 
     /// Reorder @p v to v[order[i]] in place, along the cycles of the
