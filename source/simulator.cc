@@ -332,13 +332,15 @@ namespace fsgmpm
   void
   Simulator<dim>::rebuild_nodal_fields()
   {
-    Stages::p2g(*grid,
-                particles,
-                nodes,
-                params.stress_integration,
-                [this](const unsigned int pass) {
-                  mpm_step->synchronise_projection(pass);
-                });
+    Stages::p2g(
+      *grid,
+      particles,
+      nodes,
+      params.stress_integration,
+      [this](const unsigned int pass) {
+        mpm_step->synchronise_projection(pass);
+      },
+      mpm_step->projection_stabilisation());
     if (membrane)
       mpm_step->get_membrane_coupling()->p2g(nodes);
   }

@@ -80,7 +80,11 @@ namespace fsgmpm
           Patterns::Double(0, 1),
           "With NMD or ANP: the share alpha of each cell's own volumetric "
           "strain rate and of each point's own pressure kept beside the "
-          "nodal averages (0: the paper's averages alone; 1: no smoothing; "
+          "nodal averages; with Simulation/Stress integration = nodal "
+          "projection: the share alpha of each cell's own volumetric "
+          "strain rate and of its points' mean stress kept beside the "
+          "projected fields (0: the averages alone; 1: no smoothing of the "
+          "volumetric part; "
           "0.5, twice the smallest share that kept a tank of water at rest "
           "still for 10 s, is the measured choice for still or slow water). "
           "The averages alone have a null space, patterns of compression "
@@ -89,8 +93,9 @@ namespace fsgmpm
           "at rest starts to slosh after some 0.5 s; alpha gives those "
           "patterns the stiffness alpha K, and so stiffens rotational flow "
           "that spans only a few cells (0.5 turns most of such a flow's "
-          "kinetic energy into compression: doc/water_validation.md, Still "
-          "water).");
+          "kinetic energy into compression) and the flow round a body (a "
+          "geocontainer with its water at 0.5 sinks at a fifth of its "
+          "speed): doc/water_validation.md, Still water.");
         prm.declare_entry("ANP mapping",
                           "element_mean",
                           Patterns::Selection("element_mean|interpolate"),

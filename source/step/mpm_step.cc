@@ -69,6 +69,8 @@ namespace fsgmpm
         update(nodes.volume_stress);
         update(nodes.lumped_volume);
         update(nodes.occupied_volume);
+        if (!nodes.stabilised_trace.empty())
+          update(nodes.stabilised_trace);
       }
     else
       update(nodes.support_volume);
@@ -144,13 +146,13 @@ namespace fsgmpm
       // 3D: the occupied cells' geometry once for the whole step, which
       // starts here (then the time step, the step's stages); in p2g's time.
       particles.cache_cell_geometry(grid);
-      Stages::p2g(grid,
-                  particles,
-                  nodes,
-                  settings.stress_integration,
-                  [this](const unsigned int pass) {
-                    synchronise_projection(pass);
-                  });
+      Stages::p2g(
+        grid,
+        particles,
+        nodes,
+        settings.stress_integration,
+        [this](const unsigned int pass) { synchronise_projection(pass); },
+        projection_stabilisation());
     }
     if (membrane_coupling)
       {

@@ -1,6 +1,7 @@
 #include <fsgmpm/step/cell_loops.h>
 #include <fsgmpm/step/stages.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace fsgmpm
@@ -13,10 +14,25 @@ namespace fsgmpm
         const ParticleStore<dim>                &particles,
         NodalFields<dim>                        &nodes,
         const StressIntegration                  integration,
-        const std::function<void(unsigned int)> &synchronise)
+        const std::function<void(unsigned int)> &synchronise,
+        const std::vector<double>               &stabilisation)
     {
       const bool project = (integration == StressIntegration::nodal_projection);
+      // The share alpha of a point's mean stress that stays with its own
+      // cell (the projection's counterpart of the NMD + ANP blend): the
+      // averages have a null space in which the points pack without
+      // pressure, and alpha gives it a stiffness.
+      const bool stabilise
+        = project
+          && std::any_of(stabilisation.begin(),
+                         stabilisation.end(),
+                         [](const double alpha) { return alpha > 0; });
       nodes.reset_active();
+      if (stabilise)
+        {
+          nodes.use(nodes.stabilised_trace);
+          nodes.projection_own_trace.resize(particles.occupied_cells.size());
+        }
       if (project)
         {
           nodes.use(nodes.volume_stress);
@@ -36,6 +52,8 @@ namespace fsgmpm
         Tensor<2, dim>              volume_stress;
         Tensor<2, dim>              nodal_volume_stress[dim + 1];
         std::array<double, dim + 1> lumped{};
+        double                      stabilised[dim + 1] = {};
+        double                      own_trace           = 0;
         const CellGeometry<dim>     geometry
           = CellLoops::geometry(grid, particles, c);
         for (unsigned int p = particles.cell_begin(c);
@@ -72,6 +90,17 @@ namespace fsgmpm
                 }
             else
               volume_stress += Vs;
+            if (stabilise)
+              {
+                const double alpha = stabilisation[particles.material_id[p]];
+                if (alpha > 0)
+                  {
+                    const double t = alpha * trace(Vs) / dim;
+                    own_trace += t;
+                    for (unsigned int k = 0; k < dim + 1; ++k)
+                      stabilised[k] += lambda[k] * t;
+                  }
+              }
           }
         const auto grad = geometry.shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
@@ -84,12 +113,16 @@ namespace fsgmpm
                 nodes.volume_stress[n] += nodal_volume_stress[k];
                 nodes.lumped_volume[n] += lumped[k];
                 nodes.occupied_volume[n] += geometry.volume / (dim + 1);
+                if (stabilise)
+                  nodes.stabilised_trace[n] += stabilised[k];
               }
             else
               nodes.internal_force[n] += volume_stress * grad[k];
           }
         if (project)
           nodes.projection_weights[particles.occupied_slot(c)] = lumped;
+        if (stabilise)
+          nodes.projection_own_trace[particles.occupied_slot(c)] = own_trace;
       });
 
       if (!project)
@@ -131,9 +164,20 @@ namespace fsgmpm
           {
             const unsigned int n = grid.cell_nodes[c][k];
             if (nodes.support_volume[n] > 0)
-              cell_stress
-                += (q[k] / nodes.support_volume[n]) * nodes.volume_stress[n];
+              {
+                cell_stress
+                  += (q[k] / nodes.support_volume[n]) * nodes.volume_stress[n];
+                if (stabilise)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    cell_stress[d][d] -= (q[k] / nodes.support_volume[n])
+                                         * nodes.stabilised_trace[n];
+              }
           }
+        // The share alpha of the mean stress in the cell's own points.
+        if (stabilise)
+          for (unsigned int d = 0; d < dim; ++d)
+            cell_stress[d][d]
+              += nodes.projection_own_trace[particles.occupied_slot(c)];
         const auto grad
           = CellLoops::geometry(grid, particles, c).shape_gradients();
         for (unsigned int k = 0; k < dim + 1; ++k)
@@ -146,12 +190,14 @@ namespace fsgmpm
            const ParticleStore<2> &,
            NodalFields<2> &,
            StressIntegration,
-           const std::function<void(unsigned int)> &);
+           const std::function<void(unsigned int)> &,
+           const std::vector<double> &);
     template void
     p2g<3>(const BackgroundGrid<3> &,
            const ParticleStore<3> &,
            NodalFields<3> &,
            StressIntegration,
-           const std::function<void(unsigned int)> &);
+           const std::function<void(unsigned int)> &,
+           const std::vector<double> &);
   } // namespace Stages
 } // namespace fsgmpm

@@ -212,10 +212,17 @@ namespace fsgmpm
           kinematics.resize(end - begin);
         for (unsigned int p = begin; p < end; ++p)
           {
-            PointKinematics     &kin = kinematics[p - begin];
-            const unsigned int   m   = particles.material_id[p];
-            const Tensor<2, dim> L   = point_velocity_gradient(
-              grid, smoothing, c, geometry.barycentric(particles.position[p]));
+            PointKinematics   &kin = kinematics[p - begin];
+            const unsigned int m   = particles.material_id[p];
+            // With the stabilisation, a share alpha of the cell's own
+            // volumetric rate (p2g keeps the same share of the point's
+            // mean stress in the cell).
+            const Tensor<2, dim> L = stabilised_point_velocity_gradient(
+              grid,
+              smoothing,
+              c,
+              geometry.barycentric(particles.position[p]),
+              options[m].smoothing_stabilisation);
             run_kinematics(c, m, L, strain_rate_of(L), nullptr, kin);
             kin.volume_ratio
               = update_volume(p, m, std::exp(dt * trace(kin.strain_rate)));

@@ -61,6 +61,8 @@ namespace fsgmpm
       release(lumped_volume);
       release(occupied_volume);
       release(projection_weights);
+      release(stabilised_trace);
+      release(projection_own_trace);
       release(wall_contact);
       release(field_contact_state);
       refill(active_stamp, n_nodes);
@@ -89,6 +91,8 @@ namespace fsgmpm
             lumped_volume[i]   = 0.;
             occupied_volume[i] = 0.;
           }
+        if (!stabilised_trace.empty())
+          stabilised_trace[i] = 0.;
       });
       active_nodes.clear();
       // A byte per node: when the stamp wraps, every node is unmarked once
@@ -128,6 +132,8 @@ namespace fsgmpm
              + MemoryConsumption::memory_consumption(lumped_volume)
              + MemoryConsumption::memory_consumption(occupied_volume)
              + MemoryConsumption::memory_consumption(projection_weights)
+             + MemoryConsumption::memory_consumption(stabilised_trace)
+             + MemoryConsumption::memory_consumption(projection_own_trace)
              + MemoryConsumption::memory_consumption(wall_contact)
              + MemoryConsumption::memory_consumption(field_contact_state)
              + MemoryConsumption::memory_consumption(active_nodes)
@@ -192,6 +198,14 @@ namespace fsgmpm
     /// q_kc of each of its nodes in the cell's quadrature of the projected
     /// stress (Stages::p2g).
     std::vector<std::array<double, dim + 1>> projection_weights;
+    /// Nodal stress projection with a body's `Smoothing stabilisation`
+    /// alpha (empty without): sum_p N_i(x_p) alpha_p V_p tr(sigma_p) / dim
+    /// (in-plane trace), the share of the points' mean stress that the
+    /// projection leaves to each point's own cell.
+    std::vector<double> stabilised_trace;
+    /// The same, per occupied cell (by slot): sum_p alpha_p V_p tr(sigma_p)
+    /// / dim over the cell's points, integrated in the cell itself.
+    std::vector<double> projection_own_trace;
 
     /// Unilateral walls (empty without): what the walls did to the node in
     /// this step's grid update (NodalConstraints::apply), so that the remap

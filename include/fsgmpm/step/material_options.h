@@ -30,7 +30,11 @@ namespace fsgmpm
      * of compression and expansion that average out at every node) in which
      * the points can pack without any pressure: under gravity they do, and
      * still water starts to slosh (doc/water_validation.md, "Still water").
-     * alpha gives those patterns the stiffness alpha K.
+     * alpha gives those patterns the stiffness alpha K. With the nodal
+     * stress projection (which replaces NMD and ANP) the same share of a
+     * cell's own volumetric rate and of its points' mean stress is kept
+     * beside the projected fields (Stages::p2g,
+     * Stages::stabilised_point_velocity_gradient).
      */
     double smoothing_stabilisation = 0;
     /// ANP back-mapping: false = element mean (paper), true = interpolate.

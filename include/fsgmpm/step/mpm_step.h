@@ -128,6 +128,18 @@ namespace fsgmpm
     void
     synchronise_projection(const unsigned int pass);
 
+    /// Per material, the share of a point's mean stress and volumetric rate
+    /// that the nodal projection leaves to the point's own cell (each
+    /// body's `Smoothing stabilisation`; Stages::p2g).
+    std::vector<double>
+    projection_stabilisation() const
+    {
+      std::vector<double> alpha;
+      for (const auto &o : material_options)
+        alpha.push_back(o.smoothing_stabilisation);
+      return alpha;
+    }
+
     /// The coupling of the attached membrane (its transfer weights; for a
     /// checkpoint, or to run its stages in a program's own order); null
     /// without a membrane.

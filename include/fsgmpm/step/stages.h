@@ -50,13 +50,19 @@ namespace fsgmpm
     /// values) runs after the points' sums (pass 1: volume_stress,
     /// lumped_volume, occupied_volume) and after the quadrature weights'
     /// sums (pass 2: support_volume), before the integration.
+    /// @p stabilisation, per material (empty: none), is the share alpha of
+    /// each point's mean stress that the projection leaves to the point's
+    /// own cell (MaterialOptions::smoothing_stabilisation; the strain rate
+    /// of stress_update() keeps the same share of the cell's own volumetric
+    /// rate, so the points' stress power stays the nodal forces' power).
     template <int dim>
     void
     p2g(const BackgroundGrid<dim> &grid,
         const ParticleStore<dim>  &particles,
         NodalFields<dim>          &nodes,
         const StressIntegration    integration = StressIntegration::points,
-        const std::function<void(unsigned int)> &synchronise = {});
+        const std::function<void(unsigned int)> &synchronise   = {},
+        const std::vector<double>               &stabilisation = {});
 
     /// The stress field that p2g's nodal projection integrates, at the
     /// point of barycentric coordinates @p lambda in cell @p c:
@@ -287,6 +293,32 @@ namespace fsgmpm
       for (unsigned int k = 0; k < dim + 1; ++k)
         L += lambda[k]
              * smoothing.nodal_velocity_gradient[grid.cell_nodes[c][k]];
+      return L;
+    }
+
+    /// point_velocity_gradient() with a body's smoothing stabilisation
+    /// @p alpha: its volumetric part moved by the share alpha toward the
+    /// cell's own, L + alpha (tr(L_c) - tr(L)) / dim I, the rate that is
+    /// work-conjugate to p2g's projected force when p2g leaves the same
+    /// share of the point's mean stress to its cell (@p stabilisation).
+    template <int dim>
+    inline Tensor<2, dim>
+    stabilised_point_velocity_gradient(
+      const BackgroundGrid<dim>         &grid,
+      const SmoothingFields<dim>        &smoothing,
+      const unsigned int                 c,
+      const std::array<double, dim + 1> &lambda,
+      const double                       alpha)
+    {
+      Tensor<2, dim> L = point_velocity_gradient(grid, smoothing, c, lambda);
+      if (alpha > 0)
+        {
+          const double correction
+            = alpha * (trace(smoothing.cell_velocity_gradient(c)) - trace(L))
+              / dim;
+          for (unsigned int d = 0; d < dim; ++d)
+            L[d][d] += correction;
+        }
       return L;
     }
 
