@@ -115,14 +115,13 @@ namespace fsgmpm
     // step creates energy (stability_extremes, 5 GN/m on 0.01 kg/m^2: 45%
     // of the work, none with the row sums). Mass scaling takes the row
     // sums, which depend on the membrane's geometry alone.
-    const bool             by_mass     = !(dt_floor > 0);
-    const auto             elements    = membrane.element_stiffness();
-    constexpr unsigned int max_support = dim * (dim + 1);
-    std::vector<std::array<unsigned int, max_support>> support(elements.size());
-    std::vector<std::array<Tensor<1, dim>, max_support>> gradient(
-      elements.size());
-    std::vector<unsigned int> n_support(elements.size(), 0);
+    const bool by_mass  = !(dt_floor > 0);
+    const auto elements = membrane.element_stiffness();
+    support.resize(elements.size());
+    support_gradient.resize(elements.size());
+    n_support.assign(elements.size(), 0);
     element_weight.assign(elements.size(), -1.);
+    auto &gradient = support_gradient;
     for (unsigned int e = 0; e < elements.size(); ++e)
       {
         bool complete = true;

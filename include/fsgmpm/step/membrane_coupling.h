@@ -184,6 +184,12 @@ namespace fsgmpm
     /// exact (MPI), and each element's size sum_j |G_j|^2 / m_j.
     std::vector<double> rim_mass;
     std::vector<double> element_weight;
+    /// time_step()'s scratch per element: the grid nodes its nodes' cells
+    /// reach, the grid gradient G_i at each, and how many there are.
+    static constexpr unsigned int max_support = dim * (dim + 1);
+    std::vector<std::array<unsigned int, max_support>>   support;
+    std::vector<std::array<Tensor<1, dim>, max_support>> support_gradient;
+    std::vector<unsigned int>                            n_support;
   };
 } // namespace fsgmpm
 
