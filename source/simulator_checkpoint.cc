@@ -36,16 +36,26 @@ namespace fsgmpm
     namespace fs = std::filesystem;
 
     /// Parameters a restart may change: where and what it writes, how far
-    /// it runs, and on how many threads and processes. Everything else is
-    /// the physics of the checkpointed run.
+    /// it runs, on how many threads and processes, and a body's smoothing
+    /// stabilisation (which keeps the stress power equal to the nodal
+    /// forces' power at every step, whatever its value: water that has come
+    /// to rest, a geocontainer's after the landing, may be run on with it).
+    /// Everything else is the physics of the checkpointed run.
     bool
     may_change_on_restart(const std::string &path)
     {
+      const std::string stabilisation = "/Smoothing stabilisation";
       return path.rfind("Output/", 0) == 0 || path == "Simulation/End time"
              || path == "Simulation/Maximum number of steps"
              || path == "Simulation/Termination"
              || path == "Simulation/Number of threads"
-             || path == "Simulation/Repartition imbalance";
+             || path == "Simulation/Repartition imbalance"
+             || (path.rfind("Bodies/Body ", 0) == 0
+                 && path.size() > stabilisation.size()
+                 && path.compare(path.size() - stabilisation.size(),
+                                 stabilisation.size(),
+                                 stabilisation)
+                      == 0);
     }
 
     std::string
@@ -249,8 +259,9 @@ namespace fsgmpm
                   + std::to_string(n) + " parameter(s)):" + differences
                   + "\nA restart may change only Output/*, Simulation/End "
                     "time, Maximum number of steps, Termination, Number "
-                    "of threads and Repartition imbalance; run the "
-                    "checkpointed scene's prm with --restart."));
+                    "of threads, Repartition imbalance and a body's "
+                    "Smoothing stabilisation; run the checkpointed scene's "
+                    "prm with --restart."));
   }
 
 

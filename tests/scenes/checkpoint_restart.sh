@@ -251,6 +251,12 @@ check "at the end time already: names End time and says to raise it" grep -q "al
 # A finished run continues to a later end time from its final checkpoint.
 "$exe" "${scene[@]}" --set "Simulation/End time=0.04" --restart dam_break.full >/dev/null
 check "a finished run continues to a later end time" grep -q '"termination": "end_time"' dam_break.full/summary.json
+# ... and may do so with a body's smoothing stabilisation changed (water
+# that has come to rest run on stabilised), the only physics a restart may
+# change.
+"$exe" "${scene[@]}" --set "Simulation/End time=0.05" --set "Bodies/Body 0/Smoothing stabilisation=0.5" --restart dam_break.full >/dev/null 2>stabilised.err
+check "a restart may change the smoothing stabilisation" test $? -eq 0
+check "... and runs to its end" grep -q '"simulated_time": 0.05' dam_break.full/summary.json
 
 # A full disk (a 6 MB tmpfs; skipped where mounting is not permitted): the
 # checkpoint that does not fit, and HDF5 output that does not fit, stop
