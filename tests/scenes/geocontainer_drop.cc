@@ -236,9 +236,8 @@ TEST(GeocontainerDropValidation, ShippedScenesTowardsTheFloor)
 
 // Validation (label validation): the 3D slab (prm/geocontainer_polygon_3d.prm,
 // the polygon extruded one layer (2 cm) thick between roller faces) at 4 cm
-// to 0.8 s
-// beside the 2D polygon at 4 cm. Between roller faces the slab is plane
-// strain, so its sinking velocity must follow the 2D one; the 3D membrane
+// to 0.8 s beside the 2D polygon at 4 cm. Between roller faces the slab is
+// plane strain, so its sinking velocity must follow the 2D one; the 3D membrane
 // (triangles, its section tested at each point's own z) must keep every
 // point on its side. Measured at 0.2 / 0.4 / 0.6 / 0.8 s: 3D 0.761 / 0.538 /
 // 0.444 / 0.500 m/s, 2D 0.789 / 0.571 / 0.499 / 0.528 (RMS relative
