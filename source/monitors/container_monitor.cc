@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 
@@ -155,6 +156,26 @@ namespace fsgmpm
         const auto xy = [&](const unsigned int a) {
           return Point<2>(membrane->position[a][0], membrane->position[a][1]);
         };
+        // Each quad's diagonal between rings j and j + 1, found once (not
+        // per point): 1 from r_j[k] to r_j+1[k + 1], 2 from r_j[k + 1] to
+        // r_j+1[k], 0 none.
+        std::vector<std::vector<std::uint8_t>> quad_diagonal(
+          rings.size() > 1 ? rings.size() - 1 : 0);
+        for (unsigned int j = 0; j + 1 < rings.size(); ++j)
+          {
+            const auto &r0 = rings[j], &r1 = rings[j + 1];
+            quad_diagonal[j].resize(r0.size(), 0);
+            for (unsigned int k = 0; k < r0.size(); ++k)
+              {
+                const unsigned int l = (k + 1) % r0.size();
+                if (edges.count(
+                      {std::min(r0[k], r1[l]), std::max(r0[k], r1[l])}))
+                  quad_diagonal[j][k] = 1;
+                else if (edges.count(
+                           {std::min(r0[l], r1[k]), std::max(r0[l], r1[k])}))
+                  quad_diagonal[j][k] = 2;
+              }
+          }
         // The section at height z: the points of the rings' edges and of
         // each quad's diagonal at z (into @p section, a buffer reused from
         // point to point).
@@ -181,10 +202,9 @@ namespace fsgmpm
             {
               const unsigned int l = (k + 1) % r0.size();
               section.push_back(at(r0[k], r1[k]));
-              if (edges.count({std::min(r0[k], r1[l]), std::max(r0[k], r1[l])}))
+              if (quad_diagonal[j][k] == 1)
                 section.push_back(at(r0[k], r1[l]));
-              else if (edges.count(
-                         {std::min(r0[l], r1[k]), std::max(r0[l], r1[k])}))
+              else if (quad_diagonal[j][k] == 2)
                 section.push_back(at(r0[l], r1[k]));
             }
         };
