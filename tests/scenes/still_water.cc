@@ -37,54 +37,50 @@ namespace
 {
   constexpr double H = 0.2, rho = 1000, g = 9.81, h = 0.0114;
 
-  // With @p projection the stresses reach the grid through the nodal
-  // stress projection (Simulation/Stress integration), which replaces NMD
-  // and ANP.
-  std::string
-  tank_scene(const double stabilisation,
-             const double end_time,
-             const bool   projection = false)
+  // A 2D tank filled to H with water at rest: the default scene's tank
+  // unless stated.
+  struct Tank
   {
-    return R"(
-subsection Simulation
-  set End time = )"
-           + std::to_string(end_time)
-           + (projection ? R"(
-  set Stress integration = nodal projection)"
-                         : "")
-           + R"(
-end
-subsection Stability
-  set Energy creation tolerance = 0
-end
-subsection Grid
-  set Upper corner = 0.684, 0.285
-  set Subdivisions = 60, 25
-  set Boundary conditions = 0: roller, 1: roller, 2: roller, 3: free
-end
-subsection Bodies
-  subsection Body 0
-    set Material model = Newtonian fluid
-    set Initial stress = hydrostatic
-    set Box lower corner = 0, 0
-    set Box upper corner = 0.684, 0.2
-    set Smoothing stabilisation = )"
-           + std::to_string(stabilisation)
-           + (projection ? "\n    set Volumetric smoothing = none" : "") + R"(
-    subsection Newtonian fluid
-      set Bulk modulus = 2.5e6
-    end
-  end
-end
-)";
-  }
+    double stabilisation = 0.5;
+    double end_time      = 3;
+    /// The stresses reach the grid through the nodal stress projection
+    /// (Simulation/Stress integration), which replaces NMD and ANP.
+    bool projection = false;
+    /// The energy guard at its default tolerance (off otherwise, so that a
+    /// growth can be seen).
+    bool   guard        = false;
+    double bulk_modulus = 2.5e6;
+    double width        = 0.684;
+    double height       = 0.285;
+    /// Cells across and up.
+    std::string subdivisions = "60, 25";
+  };
 
-  // test_tools::max_hydrostatic_error() over the points between the
-  // bottom row and the surface row.
-  double
-  max_pressure_error(const ParticleStore<2> &ps)
+  std::string
+  tank_scene(const Tank &t)
   {
-    return test_tools::max_hydrostatic_error(ps, rho * g, H, h, 17 * h);
+    const auto str = [](const double x) { return std::to_string(x); };
+    return "subsection Simulation\n  set End time = " + str(t.end_time)
+           + (t.projection ? "\n  set Stress integration = nodal projection"
+                           : "")
+           + "\nend\n"
+           + (t.guard ? ""
+                      : "subsection Stability\n  set Energy creation "
+                        "tolerance = 0\nend\n")
+           + "subsection Grid\n  set Upper corner = " + str(t.width) + ", "
+           + str(t.height) + "\n  set Subdivisions = " + t.subdivisions
+           + "\n  set Boundary conditions = 0: roller, 1: roller, 2: roller, "
+             "3: free\nend\n"
+             "subsection Bodies\n  subsection Body 0\n"
+             "    set Material model = Newtonian fluid\n"
+             "    set Initial stress = hydrostatic\n"
+             "    set Box lower corner = 0, 0\n"
+             "    set Box upper corner = "
+           + str(t.width) + ", " + str(H)
+           + "\n    set Smoothing stabilisation = " + str(t.stabilisation)
+           + (t.projection ? "\n    set Volumetric smoothing = none" : "")
+           + "\n    subsection Newtonian fluid\n      set Bulk modulus = "
+           + str(t.bulk_modulus) + "\n    end\n  end\nend\n";
   }
 
   // The largest kinetic energy over the run, relative to the initial
@@ -102,23 +98,28 @@ end
     return max_ke / potential;
   }
 
-  // The 2D tank of @p scene stays still: its largest kinetic energy below
-  // @p ke_bound of the potential energy and the points' pressure within
-  // @p pressure_bound of rho g H.
+  // The 2D tank @p tank stays still: its largest kinetic energy below
+  // @p ke_bound of the potential energy and the pressure of the points
+  // between the bottom row (cells of size @p cell) and @p top within
+  // @p pressure_bound of rho g H (test_tools::max_hydrostatic_error()).
   void
-  expect_still_tank(const std::string &scene,
+  expect_still_tank(const Tank        &tank,
                     const std::string &label,
+                    const double       cell,
+                    const double       top,
                     const double       ke_bound,
                     const double       pressure_bound)
   {
-    auto         prm = test_tools::make_parameters(scene);
+    auto         prm = test_tools::make_parameters(tank_scene(tank));
     Simulator<2> sim(*prm);
     const double ke    = run_tank(sim);
-    const double error = max_pressure_error(sim.get_particles());
+    const double error = test_tools::max_hydrostatic_error(
+      sim.get_particles(), rho * g, H, cell, top);
     std::cout << "[ measured ] " << label << ": max kinetic / potential "
               << "energy = " << ke
-              << ", pressure error / rho g H = " << 100 * error << " %"
-              << std::endl;
+              << ", pressure error / rho g H = " << 100 * error
+              << " %, largest energy created / guard's scale = "
+              << sim.get_stability_guard().largest_created_share() << std::endl;
     EXPECT_LT(ke, ke_bound);
     ASSERT_TRUE(std::isfinite(error));
     EXPECT_LT(error, pressure_bound);
@@ -127,10 +128,8 @@ end
 
 TEST(StillWater, TankAtRestStaysStillWithTheStabilisation)
 {
-  expect_still_tank(tank_scene(0.5, 3),
-                    "still tank, 3 s, stabilisation 0.5",
-                    5e-7,
-                    0.03);
+  expect_still_tank(
+    Tank(), "still tank, 3 s, stabilisation 0.5", h, 17 * h, 5e-7, 0.03);
 }
 
 TEST(StillWater, TankAtRestStaysStillWithTheStabilisation3D)
@@ -170,7 +169,7 @@ end
   EXPECT_LT(ke, 5e-7);
 }
 
-// The energy guard on (its default tolerance 0.5) and real water (K_f =
+// The energy guard on (its default tolerance) and real water (K_f =
 // 2.13 GPa), stabilisation 0.5, to 0.05 s: the tank is not stopped. The
 // guard measures the energy created against the energy put in and the
 // energy the scene holds (the water's potential energy above the floor,
@@ -180,17 +179,14 @@ end
 // potential energy (the first steps' acoustic transient); asserted 5e-7.
 TEST(StillWater, EnergyGuardLetsRealWaterRest)
 {
-  std::string scene   = tank_scene(0.5, 0.05);
-  const auto  replace = [&](const std::string &from, const std::string &to) {
-    const auto at = scene.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    scene.replace(at, from.size(), to);
-  };
-  replace("  set Energy creation tolerance = 0\n", "");
-  replace("set Bulk modulus = 2.5e6", "set Bulk modulus = 2.13e9");
-  auto         prm = test_tools::make_parameters(scene);
-  Simulator<2> sim(*prm);
-  const double ke = run_tank(sim);
+  Tank tank;
+  tank.end_time           = 0.05;
+  tank.guard              = true;
+  tank.bulk_modulus       = 2.13e9;
+  const std::string scene = tank_scene(tank);
+  auto              prm   = test_tools::make_parameters(scene);
+  Simulator<2>      sim(*prm);
+  const double      ke = run_tank(sim);
   std::cout << "[ measured ] real water at rest, guard on, 0.05 s: max "
             << "kinetic / potential energy = " << ke << ", energy residual "
             << sim.get_stability_guard().energy_residual(sim.get_monitors())
@@ -210,15 +206,23 @@ TEST(StillWater, EnergyGuardLetsRealWaterRest)
 // (1.9e-2 at 1.5 s), asserted above 1e-3.
 TEST(StillWater, ProjectedTankStaysStillWithTheStabilisation)
 {
-  expect_still_tank(tank_scene(0.5, 3, true),
+  Tank tank;
+  tank.projection = true;
+  expect_still_tank(tank,
                     "still tank, nodal projection, 3 s, stabilisation 0.5",
+                    h,
+                    17 * h,
                     5e-8,
                     0.06);
 }
 
 TEST(StillWater, ProjectedTankSloshesWithoutTheStabilisation)
 {
-  auto         prm = test_tools::make_parameters(tank_scene(0, 1, true));
+  Tank tank;
+  tank.stabilisation = 0;
+  tank.end_time      = 1;
+  tank.projection    = true;
+  auto         prm   = test_tools::make_parameters(tank_scene(tank));
   Simulator<2> sim(*prm);
   const double ke = run_tank(sim);
   std::cout << "[ measured ] still tank, nodal projection, 1 s, "
@@ -229,7 +233,10 @@ TEST(StillWater, ProjectedTankSloshesWithoutTheStabilisation)
 
 TEST(StillWater, TankAtRestSloshesWithoutTheStabilisation)
 {
-  auto         prm = test_tools::make_parameters(tank_scene(0, 1));
+  Tank tank;
+  tank.stabilisation = 0;
+  tank.end_time      = 1;
+  auto         prm   = test_tools::make_parameters(tank_scene(tank));
   Simulator<2> sim(*prm);
   const double ke = run_tank(sim);
   std::cout << "[ measured ] still tank, 1 s, stabilisation 0: max kinetic "
@@ -250,77 +257,32 @@ TEST(StillWater, TankAtRestSloshesWithoutTheStabilisation)
 // water, the element-mean mapping's offset of up to 2/3 h rho g growing
 // with the cell; the guard's largest readings 2.7e-8 and 3.3e-11 of its
 // scale; 306 s and 445 s on a shared core).
-namespace
-{
-  // The guard's largest reading, the kinetic energy and the pressure error
-  // after a run of @p scene.
-  void
-  run_long_tank(const std::string &scene,
-                const std::string &label,
-                const double       cell,
-                const double       kinetic_bound,
-                const double       pressure_bound)
-  {
-    auto         prm = test_tools::make_parameters(scene);
-    Simulator<2> sim(*prm);
-    const double ke    = run_tank(sim);
-    const double error = test_tools::max_hydrostatic_error(
-      sim.get_particles(), rho * g, H, cell, H - 1.5 * cell);
-    std::cout << "[ measured ] " << label << ", 10 s, guard on: max kinetic "
-              << "/ potential energy = " << ke
-              << ", pressure error / rho g H = " << 100 * error
-              << " %, largest energy created / guard's scale = "
-              << sim.get_stability_guard().largest_created_share() << std::endl;
-    EXPECT_LT(ke, kinetic_bound);
-    ASSERT_TRUE(std::isfinite(error));
-    EXPECT_LT(error, pressure_bound);
-  }
-
-  std::string
-  without_guard_override(std::string scene)
-  {
-    const std::string off = "subsection Stability\n  set Energy creation "
-                            "tolerance = 0\nend\n";
-    const auto        at  = scene.find(off);
-    EXPECT_NE(at, std::string::npos);
-    if (at != std::string::npos)
-      scene.erase(at, off.size());
-    return scene;
-  }
-} // namespace
-
 TEST(StillWaterLong, WeaklyCompressibleTenSeconds)
 {
-  run_long_tank(without_guard_override(tank_scene(0.5, 10)),
-                "still tank, K = 2.5 MPa",
-                h,
-                5e-7,
-                0.02);
+  Tank tank;
+  tank.end_time = 10;
+  tank.guard    = true;
+  expect_still_tank(tank,
+                    "still tank, K = 2.5 MPa, 10 s, guard on",
+                    h,
+                    H - 1.5 * h,
+                    5e-7,
+                    0.02);
 }
 
 TEST(StillWaterLong, RealWaterTenSeconds)
 {
-  run_long_tank(R"(
-subsection Simulation
-  set End time = 10
-end
-subsection Grid
-  set Upper corner = 0.228, 0.2736
-  set Subdivisions = 10, 12
-  set Boundary conditions = 0: roller, 1: roller, 2: roller, 3: free
-end
-subsection Bodies
-  subsection Body 0
-    set Material model = Newtonian fluid
-    set Initial stress = hydrostatic
-    set Box lower corner = 0, 0
-    set Box upper corner = 0.228, 0.2
-    set Smoothing stabilisation = 0.5
-  end
-end
-)",
-                "still narrow tank, real water",
-                0.0228,
-                5e-10,
-                0.04);
+  Tank tank;
+  tank.end_time     = 10;
+  tank.guard        = true;
+  tank.bulk_modulus = 2.13e9;
+  tank.width        = 0.228;
+  tank.height       = 0.2736;
+  tank.subdivisions = "10, 12";
+  expect_still_tank(tank,
+                    "still narrow tank, real water, 10 s, guard on",
+                    0.0228,
+                    H - 1.5 * 0.0228,
+                    5e-10,
+                    0.04);
 }
