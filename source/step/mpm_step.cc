@@ -23,7 +23,10 @@ namespace fsgmpm
     , nodes(nodes)
     , smoothing(smoothing)
     , timer(timer_stream, TimerOutput::never, TimerOutput::wall_times)
-  {}
+  {
+    for (const auto &o : material_options)
+      stabilisation.push_back(o.smoothing_stabilisation);
+  }
 
 
 

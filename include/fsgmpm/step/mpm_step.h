@@ -131,13 +131,10 @@ namespace fsgmpm
     /// Per material, the share of a point's mean stress and volumetric rate
     /// that the nodal projection leaves to the point's own cell (each
     /// body's `Smoothing stabilisation`; Stages::p2g).
-    std::vector<double>
+    const std::vector<double> &
     projection_stabilisation() const
     {
-      std::vector<double> alpha;
-      for (const auto &o : material_options)
-        alpha.push_back(o.smoothing_stabilisation);
-      return alpha;
+      return stabilisation;
     }
 
     /// The coupling of the attached membrane (its transfer weights; for a
@@ -195,10 +192,13 @@ namespace fsgmpm
     NodalConstraints<dim>                        &constraints;
     const std::vector<std::unique_ptr<Material>> &materials;
     const std::vector<MaterialOptions>           &material_options;
-    const Settings                                settings;
-    ParticleStore<dim>                           &particles;
-    NodalFields<dim>                             &nodes;
-    SmoothingFields<dim>                         &smoothing;
+    /// Each material's smoothing stabilisation (projection_stabilisation()),
+    /// read once from material_options.
+    std::vector<double>   stabilisation;
+    const Settings        settings;
+    ParticleStore<dim>   &particles;
+    NodalFields<dim>     &nodes;
+    SmoothingFields<dim> &smoothing;
     /// The attached membrane's coupling, if any.
     std::unique_ptr<MembraneCoupling<dim>> membrane_coupling;
     std::unique_ptr<MembraneCrossing<dim>> membrane_crossing;
