@@ -34,17 +34,15 @@ namespace fsgmpm
            const unsigned int        global_cell,
            std::vector<char>        &buffer)
       {
-        std::size_t n = buffer.size();
-        buffer.resize(n + record_size(particles));
         particles.for_each_state_array([&](const char *, const auto &v) {
           // On the way, a cell goes by its number in the whole grid: the
           // processes may hold windows of it, numbered each their own way.
-          const void *value = (static_cast<const void *>(&v)
-                               == static_cast<const void *>(&particles.cell))
-                                ? static_cast<const void *>(&global_cell)
-                                : static_cast<const void *>(&v[p]);
-          std::memcpy(buffer.data() + n, value, sizeof(v[0]));
-          n += sizeof(v[0]);
+          const char *value = reinterpret_cast<const char *>(
+            (static_cast<const void *>(&v)
+             == static_cast<const void *>(&particles.cell))
+              ? static_cast<const void *>(&global_cell)
+              : static_cast<const void *>(&v[p]));
+          buffer.insert(buffer.end(), value, value + sizeof(v[0]));
         });
       }
 
